@@ -1,0 +1,32 @@
+# Thin wrapper over CMake. `make run` and `make test` also install what is missing.
+BUILD_DIR ?= build
+JOBS ?= $(shell nproc)
+SCENE ?= scenes/showcase.scene
+
+.PHONY: all build deps configure run test bench clean
+
+all: build
+
+deps:
+	@tools/install_deps.sh
+
+configure:
+	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release > /dev/null
+
+build: configure
+	@cmake --build $(BUILD_DIR) -j $(JOBS)
+
+# Set-up, build, then show the default scene (a window if there is a display,
+# otherwise a PNG whose path is printed).
+run: deps build
+	@tools/run_default.sh $(BUILD_DIR)/Raytracer $(SCENE)
+
+# Set-up, build, then the whole test suite on lavapipe with validation on.
+test: deps build
+	@cd $(BUILD_DIR) && ctest --output-on-failure -j 2 --timeout 900
+
+bench: build
+	@tools/bench $(BUILD_DIR)/Raytracer
+
+clean:
+	@rm -rf $(BUILD_DIR)
