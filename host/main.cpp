@@ -1,1 +1,97 @@
-int main() { return 0; }
+// Raytracer: arguments to a mode (help, headless PNG, benchmark, window), inside
+// one try/catch that turns every failure into a message and an exit status.
+#include "bench.h"
+#include "headless.h"
+#include "options.h"
+#include "scene.h"
+#include "shader_compiler.h"
+#include "vk_check.h"
+#include "window.h"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+namespace {
+
+// Exit statuses (listed in the README).
+enum ExitStatus {
+    kSuccess = 0,
+    kRuntimeFailure = 1,   // Vulkan, device, shader or file output failure
+    kUsageError = 2,       // the command line makes no sense
+    kSceneError = 3,       // the scene file is missing or malformed
+    kValidationFailure = 4 // --validate and the validation layer printed a message
+};
+
+// Renders headless: either one frame to options.outputPath, or a benchmark.
+void runHeadless(const Options& options, const Scene& scene,
+                 std::chrono::steady_clock::time_point processStart) {
+    Context context;
+    Renderer renderer;
+    HeadlessTarget target;
+    try {
+        createInstance(context, {}, options.validate);
+        createDevice(context, options.device);
+        RenderSettings settings{options.width, options.height, options.samplesPerPixel, options.depth,
+                                glm::vec3(options.background), options.fovDegrees};
+        createRenderer(renderer, context, scene, settings);
+        createHeadlessTarget(target, context, renderer);
+        if (options.benchFrames > 0) {
+            std::cout << runBenchmark(context, renderer, target, options, processStart) << std::endl;
+        } else {
+            renderHeadlessFrame(target, context, renderer);
+            writePng(options.outputPath, readHeadlessImage(target, renderer));
+        }
+    } catch (...) {
+        destroyHeadlessTarget(target, context);
+        destroyRenderer(renderer, context);
+        destroyContext(context);
+        throw;
+    }
+    destroyHeadlessTarget(target, context);
+    destroyRenderer(renderer, context);
+    destroyContext(context);
+}
+
+int run(int argc, char** argv, std::chrono::steady_clock::time_point processStart) {
+    Options options = parseOptions(argc, argv);
+    if (options.showHelp) {
+        std::cout << usageText();
+        return kSuccess;
+    }
+    Scene scene = loadScene(options.scenePath);
+    for (const std::string& warning : scene.warnings) std::cerr << warning << '\n';
+
+    bool headless = !options.outputPath.empty() || options.benchFrames > 0;
+    if (!headless && !runWindow(options, scene)) {
+        options.outputPath = options.scenePath.stem().string() + ".png";
+        std::cerr << "No display: rendering headless to " << options.outputPath.string() << '\n';
+        headless = true;
+    }
+    if (headless) runHeadless(options, scene, processStart);
+    if (headless && options.benchFrames == 0) std::cerr << "Wrote " << options.outputPath.string() << '\n';
+
+    if (options.validate && validationMessageCount() > 0) {
+        std::cerr << "error: the validation layer printed " << validationMessageCount() << " message(s)\n";
+        return kValidationFailure;
+    }
+    return kSuccess;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    const auto processStart = std::chrono::steady_clock::now();
+    try {
+        return run(argc, argv, processStart);
+    } catch (const UsageError& error) {
+        std::cerr << "error: " << error.what() << "\n" << usageText();
+        return kUsageError;
+    } catch (const SceneError& error) {
+        std::cerr << error.what() << '\n';
+        return kSceneError;
+    } catch (const std::exception& error) {
+        std::cerr << "error: " << error.what() << '\n';
+        return kRuntimeFailure;
+    }
+}

@@ -1,0 +1,112 @@
+#include "options.h"
+
+#include "shared.h"
+
+#include <charconv>
+#include <cmath>
+#include <vector>
+
+namespace {
+
+std::uint32_t parseCount(const std::string& flag, const std::string& text, std::uint32_t low,
+                         std::uint32_t high) {
+    std::uint32_t value = 0;
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || value < low || value > high)
+        throw UsageError(flag + " expects a whole number from " + std::to_string(low) + " to " +
+                         std::to_string(high) + ", got '" + text + "'");
+    return value;
+}
+
+double parseReal(const std::string& flag, const std::string& text) {
+    double value = 0;
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+        throw UsageError(flag + " expects a number, got '" + text + "'");
+    return value;
+}
+
+glm::dvec3 parseColor(const std::string& flag, const std::string& text) {
+    std::vector<double> channels;
+    std::size_t start = 0;
+    while (true) {
+        std::size_t comma = text.find(',', start);
+        channels.push_back(parseReal(flag, text.substr(start, comma - start)));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    if (channels.size() != 3 || channels[0] < 0 || channels[1] < 0 || channels[2] < 0)
+        throw UsageError(flag + " expects three non-negative numbers R,G,B, got '" + text + "'");
+    return {channels[0], channels[1], channels[2]};
+}
+
+} // namespace
+
+std::string usageText() {
+    return "Usage: Raytracer SCENE [options]\n"
+           "Renders SCENE in a window (headless to a PNG when there is no display).\n"
+           "\n"
+           "  -o, --output FILE     render headless and write a PNG\n"
+           "  --width W             image width in pixels (default 640)\n"
+           "  --height H            image height in pixels (default 480)\n"
+           "  --spp N               samples per pixel, stratified (default 1: pixel centre)\n"
+           "  --depth D             reflection bounces after the primary hit, 0 to " +
+           std::to_string(MAX_DEPTH) +
+           " (default 5)\n"
+           "  --background R,G,B    colour of rays that hit nothing (default 1,1,1)\n"
+           "  --fov DEG             vertical field of view in degrees (default 60)\n"
+           "  --bench N             render N frames headless after a warm-up, print JSON timings\n"
+           "  --device NAME|INDEX   use this Vulkan device (default: a real GPU before a CPU one)\n"
+           "  --validate            enable the Khronos validation layer; any message fails the run\n"
+           "  -h, --help            show this help\n"
+           "\n"
+           "Window keys: Esc or Q quits.\n";
+}
+
+Options parseOptions(int argc, const char* const* argv) {
+    Options options;
+    std::vector<std::string> args(argv + 1, argv + argc);
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) throw UsageError(arg + " expects a value");
+            return args[++i];
+        };
+        if (arg == "-h" || arg == "--help") {
+            options.showHelp = true;
+        } else if (arg == "-o" || arg == "--output") {
+            options.outputPath = value();
+            if (options.outputPath.empty()) throw UsageError(arg + " expects a file name");
+        } else if (arg == "--width") {
+            options.width = parseCount(arg, value(), 1, 16384);
+        } else if (arg == "--height") {
+            options.height = parseCount(arg, value(), 1, 16384);
+        } else if (arg == "--spp") {
+            options.samplesPerPixel = parseCount(arg, value(), 1, 65536);
+        } else if (arg == "--depth") {
+            options.depth = parseCount(arg, value(), 0, MAX_DEPTH);
+        } else if (arg == "--background") {
+            options.background = parseColor(arg, value());
+        } else if (arg == "--fov") {
+            options.fovDegrees = parseReal(arg, value());
+            if (!(options.fovDegrees > 0.0 && options.fovDegrees < 180.0))
+                throw UsageError("--fov expects degrees strictly between 0 and 180");
+        } else if (arg == "--bench") {
+            options.benchFrames = parseCount(arg, value(), 1, 100000);
+        } else if (arg == "--device") {
+            options.device = value();
+        } else if (arg == "--validate") {
+            options.validate = true;
+        } else if (arg.size() > 1 && arg[0] == '-') {
+            throw UsageError("unknown option '" + arg + "' (see --help)");
+        } else if (options.scenePath.empty()) {
+            options.scenePath = arg;
+        } else {
+            throw UsageError("more than one scene file given: '" + options.scenePath.string() +
+                             "' and '" + arg + "'");
+        }
+    }
+    if (options.scenePath.empty() && !options.showHelp)
+        throw UsageError("no scene file given (see --help)");
+    return options;
+}

@@ -1,0 +1,151 @@
+#include "renderer.h"
+
+#include "shader_compiler.h"
+#include "shared.h"
+#include "vk_check.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace {
+
+// Each dispatch covers at most this many pixels a side, so a large image is
+// traced in several shorter pieces rather than one long one.
+constexpr std::uint32_t kTileSize = 1024;
+
+void createDescriptors(Renderer& renderer, const Context& context) {
+    VkDescriptorPoolSize sizes[] = {
+        {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
+        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, BINDING_COUNT - 1},
+    };
+    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    poolInfo.maxSets = 1;
+    poolInfo.poolSizeCount = 2;
+    poolInfo.pPoolSizes = sizes;
+    VK_CHECK(vkCreateDescriptorPool(context.device, &poolInfo, nullptr, &renderer.descriptorPool));
+
+    VkDescriptorSetAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    allocateInfo.descriptorPool = renderer.descriptorPool;
+    allocateInfo.descriptorSetCount = 1;
+    allocateInfo.pSetLayouts = &renderer.pipeline.setLayout;
+    VK_CHECK(vkAllocateDescriptorSets(context.device, &allocateInfo, &renderer.descriptorSet));
+
+    // The scene's ranges never change; the output image is written by resizeOutput.
+    std::vector<VkWriteDescriptorSet> writes;
+    for (std::uint32_t binding = 0; binding < BINDING_COUNT; ++binding) {
+        if (binding == BINDING_OUTPUT_IMAGE) continue;
+        VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        write.dstSet = renderer.descriptorSet;
+        write.dstBinding = binding;
+        write.descriptorCount = 1;
+        write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        write.pBufferInfo = &renderer.scene.ranges[binding];
+        writes.push_back(write);
+    }
+    vkUpdateDescriptorSets(context.device, static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
+}
+
+gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t tileX, std::uint32_t tileY) {
+    const RenderSettings& settings = renderer.settings;
+    const double tanHalfFov = std::tan(settings.fovDegrees * 0.5 * M_PI / 180.0);
+    const double aspect = double(settings.width) / double(settings.height);
+    gpu::GpuFrameParams params{};
+    params.background = glm::vec4(settings.background, 0.0f);
+    params.ambient = renderer.scene.ambient;
+    params.camera = glm::vec4(float(aspect * tanHalfFov), float(tanHalfFov), 0.0f, 0.0f);
+    params.image = glm::uvec4(settings.width, settings.height, settings.samplesPerPixel,
+                              std::min<std::uint32_t>(settings.depth, MAX_DEPTH));
+    params.counts = glm::uvec4(renderer.scene.sphereCount, renderer.scene.triangleCount,
+                               renderer.scene.lightCount, 0);
+    params.tile = glm::uvec4(tileX, tileY, 0, 0);
+    return params;
+}
+
+} // namespace
+
+void createRenderer(Renderer& renderer, const Context& context, const Scene& scene,
+                    const RenderSettings& settings) {
+    renderer.settings = settings;
+    renderer.pipeline =
+        createTracePipeline(context, compileComputeShader("trace.comp", embeddedShaderLoader()));
+    renderer.scene = uploadScene(context, packScene(scene));
+    createDescriptors(renderer, context);
+    if (context.timestampsSupported) {
+        VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+        queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
+        queryInfo.queryCount = 2;
+        VK_CHECK(vkCreateQueryPool(context.device, &queryInfo, nullptr, &renderer.timestampPool));
+    }
+    resizeOutput(renderer, context, settings.width, settings.height);
+}
+
+void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t width, std::uint32_t height) {
+    VK_CHECK(vkDeviceWaitIdle(context.device));
+    destroyImage(context, renderer.outputImage);
+    renderer.settings.width = width;
+    renderer.settings.height = height;
+    renderer.outputImage =
+        createImage(context, width, height, VK_FORMAT_R8G8B8A8_UNORM,
+                    VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+
+    VkDescriptorImageInfo imageInfo{VK_NULL_HANDLE, renderer.outputImage.view, VK_IMAGE_LAYOUT_GENERAL};
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = renderer.descriptorSet;
+    write.dstBinding = BINDING_OUTPUT_IMAGE;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    write.pImageInfo = &imageInfo;
+    vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
+}
+
+void recordTrace(const Renderer& renderer, VkCommandBuffer commands) {
+    const Image& output = renderer.outputImage;
+    // Wait for the previous frame's copy or blit to finish reading before writing.
+    // Every pixel is rewritten, so the old contents are discarded (UNDEFINED).
+    transitionImage(commands, output.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                    VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                    VK_ACCESS_SHADER_WRITE_BIT);
+    if (renderer.timestampPool) {
+        vkCmdResetQueryPool(commands, renderer.timestampPool, 0, 2);
+        vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, renderer.timestampPool, 0);
+    }
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline.pipeline);
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline.layout, 0, 1,
+                            &renderer.descriptorSet, 0, nullptr);
+    for (std::uint32_t tileY = 0; tileY < output.height; tileY += kTileSize) {
+        for (std::uint32_t tileX = 0; tileX < output.width; tileX += kTileSize) {
+            gpu::GpuFrameParams params = frameParams(renderer, tileX, tileY);
+            vkCmdPushConstants(commands, renderer.pipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                               sizeof(params), &params);
+            std::uint32_t tileWidth = std::min(kTileSize, output.width - tileX);
+            std::uint32_t tileHeight = std::min(kTileSize, output.height - tileY);
+            vkCmdDispatch(commands, (tileWidth + WORKGROUP_SIZE_X - 1) / WORKGROUP_SIZE_X,
+                          (tileHeight + WORKGROUP_SIZE_Y - 1) / WORKGROUP_SIZE_Y, 1);
+        }
+    }
+    if (renderer.timestampPool)
+        vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, renderer.timestampPool, 1);
+    // Make the kernel's writes visible to the copy or blit that follows.
+    transitionImage(commands, output.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                    VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+}
+
+double lastTraceGpuMilliseconds(const Renderer& renderer, const Context& context) {
+    if (!renderer.timestampPool) return -1.0;
+    std::uint64_t ticks[2] = {};
+    VK_CHECK(vkGetQueryPoolResults(context.device, renderer.timestampPool, 0, 2, sizeof(ticks), ticks,
+                                   sizeof(std::uint64_t),
+                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    return double(ticks[1] - ticks[0]) * context.properties.limits.timestampPeriod * 1e-6;
+}
+
+void destroyRenderer(Renderer& renderer, const Context& context) {
+    if (context.device) vkDeviceWaitIdle(context.device);
+    destroyImage(context, renderer.outputImage);
+    if (renderer.timestampPool) vkDestroyQueryPool(context.device, renderer.timestampPool, nullptr);
+    if (renderer.descriptorPool) vkDestroyDescriptorPool(context.device, renderer.descriptorPool, nullptr);
+    destroyGpuScene(context, renderer.scene);
+    destroyTracePipeline(context, renderer.pipeline);
+    renderer = Renderer{};
+}

@@ -1,0 +1,37 @@
+// The Vulkan instance, the validation messenger, the chosen device and its one queue.
+// A Context holds handles, not behaviour.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+struct Context {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE; // only with validation
+    VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+    VkPhysicalDeviceProperties properties{};
+    VkPhysicalDeviceMemoryProperties memoryProperties{};
+    VkDevice device = VK_NULL_HANDLE;
+    std::uint32_t queueFamily = 0; // graphics + compute (+ present when a window asked)
+    VkQueue queue = VK_NULL_HANDLE;
+    VkCommandPool commandPool = VK_NULL_HANDLE;
+    bool timestampsSupported = false;
+};
+
+// extensions: instance extensions the caller needs (GLFW's for a window).
+// validate: enable VK_LAYER_KHRONOS_validation and count every message it prints.
+void createInstance(Context& context, const std::vector<const char*>& extensions, bool validate);
+
+// Chooses a device: deviceRequest (a name substring or an index, as --device) when
+// given, otherwise a discrete GPU before an integrated, virtual or CPU one. With a
+// surface, only devices that can present to it qualify. Prints the choice to stderr.
+void createDevice(Context& context, const std::string& deviceRequest,
+                  VkSurfaceKHR surface = VK_NULL_HANDLE);
+
+void destroyContext(Context& context);
+
+// How many messages the validation layer has printed so far (warnings and errors).
+std::uint32_t validationMessageCount();

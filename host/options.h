@@ -1,0 +1,33 @@
+// The command line, turned into one plain struct (see SPEC.md "Command line").
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+struct Options {
+    std::filesystem::path scenePath;
+    std::filesystem::path outputPath; // empty: show a window (headless PNG if no display)
+    std::uint32_t width = 640;
+    std::uint32_t height = 480;
+    std::uint32_t samplesPerPixel = 1;
+    std::uint32_t depth = 5; // reflection bounces after the primary hit
+    glm::dvec3 background{1.0};
+    double fovDegrees = 60.0;
+    std::uint32_t benchFrames = 0; // > 0: --bench N
+    std::string device;            // --device NAME|INDEX; empty picks the best
+    bool validate = false;         // --validate: Khronos layer on, any message fails the run
+    bool showHelp = false;
+};
+
+// A command line that does not make sense; what() is the message for the user.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+Options parseOptions(int argc, const char* const* argv);
+
+std::string usageText();

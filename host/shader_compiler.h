@@ -1,0 +1,25 @@
+// GLSL to SPIR-V at run time with the glslang library. Sources come from memory
+// (the copies embedded in the binary), never from the working directory.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+// Returns the text of a shader file by its bare name ("shade.glsl"), or nothing.
+using ShaderSourceLoader = std::function<std::optional<std::string>(const std::string& name)>;
+
+// glslang's log, with file names and line numbers ("ERROR: trace.comp:12: ...").
+struct ShaderCompileError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Compiles the compute shader mainFile, resolving #include "x" through load.
+std::vector<std::uint32_t> compileComputeShader(const std::string& mainFile,
+                                                const ShaderSourceLoader& load);
+
+// A loader over the sources compiled into the binary.
+ShaderSourceLoader embeddedShaderLoader();

@@ -1,0 +1,27 @@
+// The one error path for Vulkan calls: a failed call throws VulkanError whose
+// message names the call, the VkResult and the source location.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <stdexcept>
+#include <string>
+
+struct VulkanError : std::runtime_error {
+    VulkanError(VkResult failedResult, const std::string& message)
+        : std::runtime_error(message), result(failedResult) {}
+    VkResult result;
+};
+
+// "VK_ERROR_DEVICE_LOST" and so on (Debian's headers lack vk_enum_string_helper.h).
+const char* vkResultName(VkResult result);
+
+[[noreturn]] void throwVulkanError(VkResult result, const char* call, const char* file, int line);
+
+// Checks a VkResult-returning call; anything but VK_SUCCESS throws.
+#define VK_CHECK(call)                                                                             \
+    do {                                                                                           \
+        VkResult vkCheckResult = (call);                                                           \
+        if (vkCheckResult != VK_SUCCESS)                                                           \
+            throwVulkanError(vkCheckResult, #call, __FILE__, __LINE__);                            \
+    } while (0)
