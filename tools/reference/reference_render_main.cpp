@@ -1,1 +1,138 @@
-int main() { return 0; }
+// reference_render SCENE -o out.png [options]: the CPU reference renderer as a tool.
+#include "reference_renderer.h"
+
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace {
+
+const char* const usage =
+    "usage: reference_render SCENE -o OUT.png [--width W] [--height H] [--depth D]\n"
+    "                        [--spp N] [--background R,G,B] [--fov DEG] [--truncate]\n"
+    "                        [--threads N]\n"
+    "Renders SCENE with the double-precision CPU reference (SPEC.md's model).\n"
+    "  --width W --height H   image size, default 640 480\n"
+    "  --depth D              reflection bounces, default 5\n"
+    "  --spp N                samples per pixel on a regular grid, default 1\n"
+    "  --background R,G,B     colour of rays that hit nothing, default 1,1,1\n"
+    "  --fov DEG              vertical field of view, default 60\n"
+    "  --truncate             write floor(c*255) instead of rounding (the course's images)\n"
+    "  --threads N            worker threads, default: one per hardware thread\n";
+
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+template <typename T> T parseNumber(std::string_view option, std::string_view text) {
+    T value{};
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || text.empty())
+        throw UsageError(std::string(option) + " expects a number, got '" + std::string(text) +
+                         "'");
+    if constexpr (std::is_floating_point_v<T>)
+        if (!std::isfinite(value))
+            throw UsageError(std::string(option) + " expects a finite number, got '" +
+                             std::string(text) + "'");
+    return value;
+}
+
+int parseCount(std::string_view option, std::string_view text, int minimum) {
+    const int value = parseNumber<int>(option, text);
+    if (value < minimum)
+        throw UsageError(std::string(option) + " must be at least " + std::to_string(minimum) +
+                         ", got " + std::string(text));
+    return value;
+}
+
+glm::dvec3 parseColour(std::string_view option, std::string_view text) {
+    glm::dvec3 colour;
+    for (int k = 0; k < 3; ++k) {
+        const std::size_t comma = text.find(',');
+        if ((k < 2) != (comma != std::string_view::npos))
+            throw UsageError(std::string(option) + " expects R,G,B");
+        colour[k] = parseNumber<double>(option, text.substr(0, comma));
+        if (colour[k] < 0)
+            throw UsageError(std::string(option) + " components must not be negative");
+        text = k < 2 ? text.substr(comma + 1) : std::string_view();
+    }
+    return colour;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::string scenePath, outputPath;
+    ReferenceSettings settings;
+    int threads = 0;
+    try {
+        for (int k = 1; k < argc; ++k) {
+            const std::string_view arg = argv[k];
+            auto value = [&]() -> std::string_view {
+                if (k + 1 >= argc) throw UsageError(std::string(arg) + " needs a value");
+                return argv[++k];
+            };
+            if (arg == "--help" || arg == "-h") {
+                std::fputs(usage, stdout);
+                return 0;
+            } else if (arg == "-o") {
+                outputPath = value();
+            } else if (arg == "--width") {
+                settings.width = parseCount(arg, value(), 1);
+            } else if (arg == "--height") {
+                settings.height = parseCount(arg, value(), 1);
+            } else if (arg == "--depth") {
+                settings.depth = parseCount(arg, value(), 0);
+            } else if (arg == "--spp") {
+                settings.spp = parseCount(arg, value(), 1);
+            } else if (arg == "--threads") {
+                threads = parseCount(arg, value(), 0);
+            } else if (arg == "--background") {
+                settings.background = parseColour(arg, value());
+            } else if (arg == "--fov") {
+                settings.fovDegrees = parseNumber<double>(arg, value());
+                if (!(settings.fovDegrees > 0 && settings.fovDegrees < 180))
+                    throw UsageError("--fov must be between 0 and 180 degrees");
+            } else if (arg == "--truncate") {
+                settings.truncate = true;
+            } else if (arg.starts_with("-")) {
+                throw UsageError("unknown option " + std::string(arg));
+            } else if (scenePath.empty()) {
+                scenePath = arg;
+            } else {
+                throw UsageError("more than one scene given: " + scenePath + ", " +
+                                 std::string(arg));
+            }
+        }
+        if (scenePath.empty()) throw UsageError("no scene file given");
+        if (outputPath.empty()) throw UsageError("no output given (-o OUT.png)");
+    } catch (const UsageError& error) {
+        std::fprintf(stderr, "reference_render: %s (see --help)\n", error.what());
+        return 2;
+    }
+
+    try {
+        const Scene scene = loadScene(scenePath);
+        for (const std::string& warning : scene.warnings)
+            std::fprintf(stderr, "%s\n", warning.c_str());
+        const auto start = std::chrono::steady_clock::now();
+        const Image8 image = renderReference(scene, settings, threads);
+        const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+        writePng(outputPath, image);
+        std::fprintf(stderr, "reference_render: %s %dx%d depth %d spp %d in %.2f s\n",
+                     scenePath.c_str(), settings.width, settings.height, settings.depth,
+                     settings.spp, seconds.count());
+    } catch (const SceneError& error) {
+        std::fprintf(stderr, "%s\n", error.what());
+        return 1;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "reference_render: error: %s\n", error.what());
+        return 1;
+    }
+    return 0;
+}

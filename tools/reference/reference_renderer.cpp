@@ -1,0 +1,384 @@
+// The CPU reference renderer: SPEC.md's model, literally, in double precision.
+//
+// It exists to check the GPU renderer, so it shares none of the GPU shader's
+// numerical methods; a mistake in one method then shows up as a difference
+// instead of being repeated on both sides.
+//
+//   what                 shader (float)                     reference (double)
+//   -------------------  ---------------------------------  ---------------------------------
+//   sphere               stable quadratic, Ray Tracing      geometric method (closest approach
+//                        Gems ch.7                          of the line to the centre, Haines)
+//   triangle             watertight, Woop-Benthin-Wald      signed volumes (scalar triple
+//                        2013 (shear + 2D edge functions)   products of the ray with each edge,
+//                                                           Pluecker-style), no shear, no
+//                                                           axis permutation
+//   self-intersection    origin pushed off the surface      none needed: a secondary ray knows
+//                        by a scaled offset                 the primitive it leaves; its own
+//                                                           triangle is skipped (a plane can't be
+//                                                           re-hit) and for its own sphere the
+//                                                           root at t = 0 is removed analytically
+//   reflection           iterative loop                     the SPEC recursion, folded from the
+//                                                           innermost bounce outwards
+//
+// Accuracy. Spheres: the geometric method's d^2 = |L|^2 - tca^2 cancels when the
+// eye is far from a small sphere; in double it keeps about 53 - 2*log2(|L|/r)
+// bits, i.e. > 35 bits for |L|/r < 500, far below a float's 24. Triangles: the
+// edge test of an edge shared by two triangles is computed from the same two
+// (translated) vertices in both, and IEEE arithmetic makes cross(b, a) exactly
+// -cross(a, b), so the two tests agree exactly on which side a ray passes: the
+// test is watertight with inclusive edges and needs no epsilon. Zero-area
+// triangles are dropped up front (no ray can hit them; the parser warns).
+//
+// Speed: brute force over every primitive for every ray (no acceleration
+// structure that could itself be wrong), rows spread over std::threads.
+#include "reference_renderer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <functional>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+using glm::dvec3;
+
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr int fromEye = -1; // the primitive id of a ray that leaves no surface
+
+// Primitive ids: spheres 0..S-1, then triangles S..S+T-1 in file order. Equal
+// distances go to the lower id (the first in the file, spheres before triangles).
+struct Ray {
+    dvec3 origin;
+    dvec3 dir;
+    int from = fromEye;
+};
+
+struct RefTriangle {
+    dvec3 a, b, c;
+    dvec3 normal; // cross(b - a, c - a): the plane, for t, and the fallback normal
+    int id;       // primitive id; scene.triangles[id - sphereCount] holds the rest
+};
+
+struct World {
+    const Scene& scene;
+    int sphereCount = 0;
+    std::vector<RefTriangle> triangles; // those with non-zero area only
+};
+
+World prepareWorld(const Scene& scene) {
+    World world{scene, int(scene.spheres.size()), {}};
+    world.triangles.reserve(scene.triangles.size());
+    for (std::size_t k = 0; k < scene.triangles.size(); ++k) {
+        const Vertex* v = scene.triangles[k].vertices;
+        RefTriangle t{v[0].position, v[1].position, v[2].position, {}, world.sphereCount + int(k)};
+        t.normal = glm::cross(t.b - t.a, t.c - t.a);
+        if (t.normal != dvec3(0.0)) world.triangles.push_back(t);
+    }
+    return world;
+}
+
+// The nearest t > 0 where the ray meets the sphere, or infinity. Geometric
+// method: the closest approach of the ray's line to the centre is at tca, at a
+// squared distance d2; the line is inside the sphere for tca +- thc.
+double hitSphere(const Sphere& sphere, const Ray& ray, bool leavesIt) {
+    const double dd = glm::dot(ray.dir, ray.dir);
+    if (leavesIt) {
+        // The origin is on the sphere, so t = 0 is one root of
+        // |O + tD - C|^2 = r^2; the other is where the two roots sum to.
+        const double t = -2.0 * glm::dot(ray.origin - sphere.center, ray.dir) / dd;
+        return t > 0 ? t : infinity;
+    }
+    const dvec3 toCenter = sphere.center - ray.origin;
+    const double tca = glm::dot(toCenter, ray.dir) / dd;
+    const double d2 = glm::dot(toCenter, toCenter) - tca * tca * dd;
+    const double r2 = sphere.radius * sphere.radius;
+    if (d2 > r2) return infinity;
+    const double thc = std::sqrt((r2 - d2) / dd);
+    if (tca - thc > 0) return tca - thc;
+    if (tca + thc > 0) return tca + thc;
+    return infinity;
+}
+
+// Signed-volume test: with the vertices relative to the ray origin, the ray passes
+// inside the triangle iff the three triple products [D, a, b], [D, b, c],
+// [D, c, a] have no two of opposite sign. Each is the (unnormalised) barycentric
+// weight of the vertex opposite that edge. Both sides of the triangle count.
+// Only hits with 0 < t < tMax are reported; the cheap plane distance is checked
+// first so that most triangles cost no edge test (the result is the same).
+bool hitTriangle(const RefTriangle& tri, const Ray& ray, double tMax, double& t, dvec3& weights) {
+    const double facing = glm::dot(tri.normal, ray.dir);
+    if (facing == 0)
+        return false; // the ray runs in the triangle's plane: it sees an edge-on sliver
+    const dvec3 a = tri.a - ray.origin;
+    t = glm::dot(tri.normal, a) / facing;
+    if (!(t > 0 && t < tMax)) return false;
+    const dvec3 b = tri.b - ray.origin, c = tri.c - ray.origin;
+    const double wc = glm::dot(ray.dir, glm::cross(a, b));
+    const double wa = glm::dot(ray.dir, glm::cross(b, c));
+    if ((wa < 0 && wc > 0) || (wa > 0 && wc < 0)) return false;
+    const double wb = glm::dot(ray.dir, glm::cross(c, a));
+    if ((wb < 0 && (wa > 0 || wc > 0)) || (wb > 0 && (wa < 0 || wc < 0))) return false;
+    const double sum = wa + wb + wc; // mathematically dot(D, normal), non-zero here
+    if (sum == 0) return false;      // only if rounding flushed all three: nothing to interpolate
+    weights = dvec3(wa, wb, wc) / sum;
+    return true;
+}
+
+struct Hit {
+    double t = infinity;
+    int id = fromEye;
+    dvec3 weights{0.0}; // barycentric weights of the triangle's vertices
+};
+
+bool closestHit(const World& world, const Ray& ray, Hit& hit) {
+    for (int s = 0; s < world.sphereCount; ++s) {
+        const double t = hitSphere(world.scene.spheres[std::size_t(s)], ray, ray.from == s);
+        if (t < hit.t) {
+            hit.t = t;
+            hit.id = s;
+        }
+    }
+    double t = 0;
+    dvec3 weights;
+    for (const RefTriangle& tri : world.triangles) {
+        if (tri.id != ray.from && hitTriangle(tri, ray, hit.t, t, weights)) {
+            hit.t = t;
+            hit.id = tri.id;
+            hit.weights = weights;
+        }
+    }
+    return hit.id != fromEye;
+}
+
+// Whether any surface lies strictly between the ray's origin and origin + maxT * dir.
+bool occluded(const World& world, const Ray& ray, double maxT) {
+    for (int s = 0; s < world.sphereCount; ++s)
+        if (hitSphere(world.scene.spheres[std::size_t(s)], ray, ray.from == s) < maxT) return true;
+    double t = 0;
+    dvec3 weights;
+    for (const RefTriangle& tri : world.triangles)
+        if (tri.id != ray.from && hitTriangle(tri, ray, maxT, t, weights)) return true;
+    return false;
+}
+
+struct SurfacePoint {
+    dvec3 position;
+    dvec3 normal; // unit, facing the incoming ray
+    Material material;
+};
+
+SurfacePoint surfaceAt(const World& world, const Ray& ray, const Hit& hit) {
+    SurfacePoint p;
+    p.position = ray.origin + hit.t * ray.dir;
+    if (hit.id < world.sphereCount) {
+        const Sphere& sphere = world.scene.spheres[std::size_t(hit.id)];
+        p.normal = (p.position - sphere.center) / sphere.radius;
+        p.material = sphere.material;
+    } else {
+        const Triangle& tri = world.scene.triangles[std::size_t(hit.id - world.sphereCount)];
+        const Vertex* v = tri.vertices;
+        const dvec3 w = hit.weights;
+        const dvec3 n = w.x * v[0].normal + w.y * v[1].normal + w.z * v[2].normal;
+        const double length = glm::length(n);
+        if (length > 0) {
+            p.normal = n / length;
+        } else {
+            const dvec3 a = v[0].position, b = v[1].position, c = v[2].position;
+            p.normal = glm::normalize(glm::cross(b - a, c - a));
+        }
+        const Material &m0 = v[0].material, &m1 = v[1].material, &m2 = v[2].material;
+        p.material.diffuse = w.x * m0.diffuse + w.y * m1.diffuse + w.z * m2.diffuse;
+        p.material.specular = w.x * m0.specular + w.y * m1.specular + w.z * m2.specular;
+        p.material.shininess = w.x * m0.shininess + w.y * m1.shininess + w.z * m2.shininess;
+    }
+    if (glm::dot(p.normal, ray.dir) > 0) p.normal = -p.normal;
+    return p;
+}
+
+// Phong with hard shadows, exactly as SPEC's "Shading" section.
+dvec3 shadeLocal(const World& world, const SurfacePoint& p, dvec3 view, int id) {
+    const Material& m = p.material;
+    dvec3 local = world.scene.ambient; // k_a = 1, once per point
+    for (const Light& light : world.scene.lights) {
+        const dvec3 toLight = light.position - p.position;
+        const double distance = glm::length(toLight);
+        if (distance == 0)
+            continue; // a light on the surface itself has no direction; it adds nothing
+        const dvec3 l = toLight / distance;
+        const double nl = glm::dot(p.normal, l);
+        if (nl <= 0) continue;
+        if (occluded(world, Ray{p.position, l, id}, distance)) continue;
+        const dvec3 r = 2.0 * nl * p.normal - l;
+        const double rv = glm::dot(r, view);
+        // pow(x, 0) is 1 for x > 0, so shininess 0 gives a full-strength highlight.
+        const double highlight = rv > 0 ? std::pow(rv, m.shininess) : 0.0;
+        local += light.color * (m.diffuse * nl + m.specular * highlight);
+    }
+    return local;
+}
+
+struct Bounce {
+    dvec3 local;
+    dvec3 ks;
+};
+
+// colour(ray, bounce) of SPEC's "Reflection": the path is followed forwards, then
+// (1 - ks) * local + ks * colour(next) is evaluated from the innermost bounce out,
+// the same arithmetic as the recursion without a stack frame per bounce.
+dvec3 traceRay(const World& world, const ReferenceSettings& settings, Ray ray,
+               std::vector<Bounce>& path) {
+    path.clear();
+    dvec3 colour = settings.background;
+    for (int bounce = 0;; ++bounce) {
+        Hit hit;
+        if (!closestHit(world, ray, hit)) {
+            colour = settings.background;
+            break;
+        }
+        const SurfacePoint p = surfaceAt(world, ray, hit);
+        const dvec3 view = -glm::normalize(ray.dir);
+        const dvec3 local = shadeLocal(world, p, view, hit.id);
+        const dvec3 ks = p.material.specular;
+        if (bounce >= settings.depth || ks == dvec3(0.0)) {
+            colour = local;
+            break;
+        }
+        path.push_back({local, ks});
+        const dvec3 reflected = ray.dir - 2.0 * glm::dot(ray.dir, p.normal) * p.normal;
+        ray = Ray{p.position, glm::normalize(reflected), hit.id};
+    }
+    for (std::size_t k = path.size(); k-- > 0;)
+        colour = (1.0 - path[k].ks) * path[k].local + path[k].ks * colour;
+    return colour;
+}
+
+struct Camera {
+    double width, height, tanHalfX, tanHalfY;
+    std::vector<glm::dvec2> samples; // offsets (u, v) inside a pixel
+};
+
+// spp samples on the most square rows x cols grid with rows * cols == spp, at the
+// cell centres: n*n gives a regular grid, 1 the pixel centre as SPEC requires.
+Camera makeCamera(const ReferenceSettings& settings) {
+    if (settings.width <= 0 || settings.height <= 0)
+        throw std::invalid_argument("image size must be positive, got " +
+                                    std::to_string(settings.width) + "x" +
+                                    std::to_string(settings.height));
+    if (settings.spp <= 0) throw std::invalid_argument("samples per pixel must be positive");
+    if (settings.depth < 0) throw std::invalid_argument("depth must not be negative");
+    if (!(settings.fovDegrees > 0 && settings.fovDegrees < 180))
+        throw std::invalid_argument("field of view must be between 0 and 180 degrees");
+    Camera camera;
+    camera.width = settings.width;
+    camera.height = settings.height;
+    camera.tanHalfY = std::tan(settings.fovDegrees * (std::numbers::pi / 360.0));
+    camera.tanHalfX = camera.width / camera.height * camera.tanHalfY;
+    int rows = int(std::sqrt(double(settings.spp)));
+    while (settings.spp % rows != 0)
+        --rows;
+    const int cols = settings.spp / rows;
+    for (int k = 0; k < settings.spp; ++k)
+        camera.samples.emplace_back((k % cols + 0.5) / cols, (k / cols + 0.5) / rows);
+    return camera;
+}
+
+// SPEC's camera: x = (2 (i + u) / W - 1) * aspect * tan(fov/2),
+// y = (1 - 2 (j + v) / H) * tan(fov/2), direction normalize(x, y, -1).
+dvec3 eyeDirection(const Camera& camera, int i, int j, glm::dvec2 sample) {
+    const double x = (2.0 * (i + sample.x) / camera.width - 1.0) * camera.tanHalfX;
+    const double y = (1.0 - 2.0 * (j + sample.y) / camera.height) * camera.tanHalfY;
+    return glm::normalize(dvec3(x, y, -1.0));
+}
+
+double clampChannel(double c) {
+    return c > 0 ? std::min(c, 1.0) : 0.0; // also sends NaN to 0
+}
+
+dvec3 pixelColour(const World& world, const ReferenceSettings& settings, const Camera& camera,
+                  int i, int j, std::vector<Bounce>& path) {
+    dvec3 sum(0.0);
+    for (glm::dvec2 sample : camera.samples) {
+        const dvec3 c =
+            traceRay(world, settings, Ray{dvec3(0.0), eyeDirection(camera, i, j, sample)}, path);
+        sum += dvec3(clampChannel(c.x), clampChannel(c.y), clampChannel(c.z));
+    }
+    return sum / double(camera.samples.size());
+}
+
+} // namespace
+
+int quantizeChannel(double c, bool truncate) {
+    const double scaled = clampChannel(c) * 255.0;
+    return int(std::floor(truncate ? scaled : scaled + 0.5));
+}
+
+glm::dvec3 traceEyeRay(const Scene& scene, const ReferenceSettings& settings, glm::dvec3 dir) {
+    const World world = prepareWorld(scene);
+    std::vector<Bounce> path;
+    return traceRay(world, settings, Ray{dvec3(0.0), dir}, path);
+}
+
+glm::dvec3 tracePixel(const Scene& scene, const ReferenceSettings& settings, int i, int j) {
+    const Camera camera = makeCamera(settings);
+    const World world = prepareWorld(scene);
+    std::vector<Bounce> path;
+    return pixelColour(world, settings, camera, i, j, path);
+}
+
+Image8 renderReference(const Scene& scene, const ReferenceSettings& settings, int threads) {
+    const Camera camera = makeCamera(settings);
+    const World world = prepareWorld(scene);
+    Image8 image;
+    image.width = settings.width;
+    image.height = settings.height;
+    image.rgba.resize(std::size_t(image.width) * std::size_t(image.height) * 4);
+
+    if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
+    threads = std::min(threads, settings.height);
+    // Rows are handed out one at a time, so an expensive part of the image
+    // (a reflective mesh) does not leave the other threads idle.
+    std::atomic<int> nextRow{0};
+    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
+    auto work = [&](std::exception_ptr& error) {
+        try {
+            std::vector<Bounce> path;
+            for (int j = nextRow++; j < settings.height; j = nextRow++) {
+                for (int i = 0; i < settings.width; ++i) {
+                    const dvec3 c = pixelColour(world, settings, camera, i, j, path);
+                    std::uint8_t* out =
+                        &image.rgba[(std::size_t(j) * std::size_t(image.width) + std::size_t(i)) *
+                                    4];
+                    out[0] = std::uint8_t(quantizeChannel(c.x, settings.truncate));
+                    out[1] = std::uint8_t(quantizeChannel(c.y, settings.truncate));
+                    out[2] = std::uint8_t(quantizeChannel(c.z, settings.truncate));
+                    out[3] = 255;
+                }
+            }
+        } catch (...) {
+            error = std::current_exception();
+            nextRow = settings.height; // stop the others early
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int k = 1; k < threads; ++k) {
+        try {
+            pool.emplace_back(work, std::ref(errors[std::size_t(k)]));
+        } catch (const std::system_error&) {
+            break; // no more threads to be had: the ones running share the rows
+        }
+    }
+    work(errors[0]);
+    for (std::thread& thread : pool)
+        thread.join();
+    for (const std::exception_ptr& error : errors)
+        if (error) std::rethrow_exception(error);
+    return image;
+}

@@ -1,0 +1,21 @@
+// 8-bit RGBA images and PNG files (stb). No Vulkan, so the reference renderer and
+// the tests can use it without a GPU.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+// Row-major, top row first, 4 bytes per pixel (R, G, B, A).
+struct Image8 {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> rgba;
+};
+
+// Reads any PNG stb understands and expands it to RGBA8.
+// Throws std::runtime_error "PATH: REASON" if it can't.
+Image8 readPng(const std::filesystem::path& path);
+
+// Writes "PATH.tmp" and renames it over PATH, so a failed write never leaves a
+// truncated PNG behind. Throws std::runtime_error "PATH: REASON" on failure.
+void writePng(const std::filesystem::path& path, const Image8& image);

@@ -1,0 +1,36 @@
+// The independent CPU reference: SPEC.md's model in double precision, with its own
+// intersection methods (see reference_renderer.cpp). Slow and simple on purpose;
+// the tests compare the GPU renderer against it.
+#pragma once
+
+#include "image_io.h"
+#include "scene.h"
+
+#include <glm/glm.hpp>
+
+struct ReferenceSettings {
+    int width = 640, height = 480;
+    int depth = 5; // reflection bounces after the primary hit
+    int spp = 1;   // 1: pixel centre; n*n: regular grid; else the most square grid of n
+    double fovDegrees = 60;
+    glm::dvec3 background{1.0};
+    // floor(c*255) instead of rounding, to compare with the course's images.
+    bool truncate = false;
+};
+
+// Renders the whole image. threads = 0 uses std::thread::hardware_concurrency().
+// Throws std::invalid_argument for a non-positive size or spp, a negative depth or
+// a field of view outside (0, 180) degrees.
+Image8 renderReference(const Scene& scene, const ReferenceSettings& settings, int threads = 0);
+
+// One pixel (column i from the left, row j from the top) as it goes into the
+// image: the average of its clamped samples, in [0,1], before quantisation.
+glm::dvec3 tracePixel(const Scene& scene, const ReferenceSettings& settings, int i, int j);
+
+// The unclamped colour of one ray from the eye (origin 0) in direction dir, with
+// settings.depth bounces: for debugging single rays by hand.
+glm::dvec3 traceEyeRay(const Scene& scene, const ReferenceSettings& settings, glm::dvec3 dir);
+
+// The byte written for a channel value: clamp to [0,1], then floor(c*255+0.5), or
+// floor(c*255) when truncating. NaN becomes 0.
+int quantizeChannel(double c, bool truncate);
