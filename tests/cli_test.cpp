@@ -1,0 +1,153 @@
+// The command line as a user meets it: help, usage errors, bad scene files (clear
+// message, non-zero exit, no image written), device choice and --bench output.
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+std::string minimalScene() {
+    return "2\namb: 0.1 0.1 0.1\nsphere\npos: 0 0 -3\nrad: 1\ndif: 0.5 0.2 0.2\nspe: 0.3 0.3 0.3\n"
+           "shi: 10\nlight\npos: 2 2 0\ncol: 1 1 1\n";
+}
+
+std::filesystem::path writeScene(const std::filesystem::path& dir, const std::string& text) {
+    std::filesystem::path path = dir / "input.scene";
+    writeTextFile(path, text);
+    return path;
+}
+
+TEST(CommandLine, HelpPrintsUsageAndSucceeds) {
+    ProcessResult run = runRaytracer({"--help"});
+    EXPECT_EQ(run.exitCode, 0);
+    EXPECT_NE(run.out.find("Usage: Raytracer SCENE"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("--bench N"), std::string::npos);
+}
+
+TEST(CommandLine, MissingSceneArgumentIsAUsageError) {
+    ProcessResult run = runRaytracer({});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("error: no scene file given"), std::string::npos) << run.err;
+}
+
+TEST(CommandLine, BadOptionValuesAreUsageErrors) {
+    const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+        {{"x.scene", "--width", "0"}, "--width expects a whole number from 1 to 16384, got '0'"},
+        {{"x.scene", "--height", "-5"}, "--height expects a whole number from 1 to 16384, got '-5'"},
+        {{"x.scene", "--spp", "abc"}, "--spp expects a whole number from 1 to 65536, got 'abc'"},
+        {{"x.scene", "--depth", "65"}, "--depth expects a whole number from 0 to 64, got '65'"},
+        {{"x.scene", "--fov", "180"}, "--fov expects degrees strictly between 0 and 180"},
+        {{"x.scene", "--background", "1,1"}, "--background expects three non-negative numbers R,G,B, got '1,1'"},
+        {{"x.scene", "--width"}, "--width expects a value"},
+        {{"x.scene", "--frobnicate"}, "unknown option '--frobnicate' (see --help)"},
+        {{"a.scene", "b.scene"}, "more than one scene file given: 'a.scene' and 'b.scene'"},
+    };
+    for (const auto& [args, message] : cases) {
+        ProcessResult run = runRaytracer(args);
+        EXPECT_EQ(run.exitCode, 2) << message;
+        EXPECT_NE(run.err.find("error: " + message), std::string::npos) << run.err;
+    }
+}
+
+TEST(CommandLine, MissingSceneFileNamesTheFileAndWritesNothing) {
+    std::filesystem::path dir = freshOutputDir("cli/missing");
+    std::filesystem::path output = dir / "out.png";
+    ProcessResult run = runRaytracer({(dir / "nope.scene").string(), "-o", output.string()});
+    EXPECT_EQ(run.exitCode, 3);
+    EXPECT_NE(run.err.find((dir / "nope.scene").string() + ": error: cannot open file"), std::string::npos)
+        << run.err;
+    EXPECT_FALSE(std::filesystem::exists(output));
+}
+
+TEST(CommandLine, MalformedSceneNamesFileAndLineAndWritesNothing) {
+    std::filesystem::path dir = freshOutputDir("cli/malformed");
+    std::filesystem::path scene = writeScene(dir, "1\namb: 0 0 0\nsphere\npos: 0 0 -3\nradius: 1\n");
+    std::filesystem::path output = dir / "out.png";
+    ProcessResult run = runRaytracer({scene.string(), "-o", output.string()});
+    EXPECT_EQ(run.exitCode, 3);
+    EXPECT_NE(run.err.find(scene.string() + ":5: error: "), std::string::npos) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(output));
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png.tmp"));
+}
+
+TEST(CommandLine, WarningsArePrintedAndTheRenderGoesOn) {
+    std::filesystem::path dir = freshOutputDir("cli/warning");
+    std::string text = minimalScene();
+    text.replace(text.find("spe: 0.3 0.3 0.3"), 16, "spe: 1.5 0.3 0.3");
+    std::filesystem::path scene = writeScene(dir, text);
+    ProcessResult run = runRaytracer({scene.string(), "-o", (dir / "out.png").string(), "--width", "32",
+                                      "--height", "24", "--validate"});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.err.find(scene.string() + ":7: warning: "), std::string::npos) << run.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "out.png"));
+}
+
+TEST(CommandLine, UnknownDeviceListsTheDevicesFound) {
+    std::filesystem::path dir = freshOutputDir("cli/device");
+    std::filesystem::path scene = writeScene(dir, minimalScene());
+    ProcessResult run = runRaytracer({scene.string(), "-o", (dir / "out.png").string(), "--device",
+                                      "no-such-gpu"});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_NE(run.err.find("--device no-such-gpu matches no Vulkan device. Found:"), std::string::npos)
+        << run.err;
+    EXPECT_NE(run.err.find("llvmpipe"), std::string::npos) << run.err;
+}
+
+TEST(CommandLine, DeviceByIndexAndNameIsUsedAndPrinted) {
+    std::filesystem::path dir = freshOutputDir("cli/device-choice");
+    std::filesystem::path scene = writeScene(dir, minimalScene());
+    for (std::string request : {"0", "llvmpipe"}) {
+        ProcessResult run = runRaytracer({scene.string(), "-o", (dir / "out.png").string(), "--device",
+                                          request, "--width", "32", "--height", "24", "--validate"});
+        EXPECT_EQ(run.exitCode, 0) << run.err;
+        EXPECT_NE(run.err.find("Device: llvmpipe"), std::string::npos) << run.err;
+    }
+}
+
+TEST(CommandLine, WithoutDisplayTheWindowModeRendersHeadless) {
+    std::filesystem::path dir = freshOutputDir("cli/no-display");
+    std::filesystem::path scene = writeScene(dir, minimalScene());
+    unsetenv("DISPLAY");
+    unsetenv("WAYLAND_DISPLAY");
+    ProcessResult run = runRaytracer({scene.string(), "--width", "32", "--height", "24"}, 300, dir);
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.err.find("No display: rendering headless to input.png"), std::string::npos) << run.err;
+    EXPECT_EQ(readPng(dir / "input.png").width, 32);
+}
+
+TEST(CommandLine, BenchPrintsOneJsonLineWithEveryKey) {
+    std::filesystem::path dir = freshOutputDir("cli/bench");
+    std::filesystem::path scene = writeScene(dir, minimalScene());
+    ProcessResult run = runRaytracer({scene.string(), "--bench", "3", "--width", "64", "--height", "48",
+                                      "--validate"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    std::string json = run.out.substr(run.out.rfind('{'));
+    for (const char* key : {"\"scene\"", "\"width\": 64", "\"height\": 48", "\"spp\": 1", "\"depth\": 5",
+                            "\"frames\": 3", "\"device\": \"llvmpipe", "\"wall_ms_median\"",
+                            "\"wall_ms_min\"", "\"gpu_ms_median\"", "\"startup_ms\"", "\"gpu_bytes\""})
+        EXPECT_NE(json.find(key), std::string::npos) << key << " missing from " << json;
+    EXPECT_EQ(json.find("null"), std::string::npos) << "lavapipe has timestamps: " << json;
+}
+
+TEST(CommandLine, SamplesPerPixelAverageStratifiedSamples) {
+    // With several samples per pixel the positions are the renderer's choice: the
+    // GPU jitters within strata, the reference uses the strata's centres. Away
+    // from edges both average the same smooth colour; on an edge a pixel's
+    // estimates may differ by the weight of about two of its 16 samples.
+    std::filesystem::path dir = freshOutputDir("cli/spp");
+    std::filesystem::path scene = writeScene(dir, minimalScene());
+    ProcessResult run = runRaytracer({scene.string(), "-o", (dir / "out.png").string(), "--spp", "16",
+                                      "--width", "80", "--height", "60", "--validate"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    ReferenceSettings settings;
+    settings.width = 80;
+    settings.height = 60;
+    settings.spp = 16;
+    ImageComparison comparison =
+        compareImages(readPng(dir / "out.png"), renderReference(loadScene(scene), settings), 2);
+    std::printf("spp 16: %s\n", describe(comparison).c_str());
+    EXPECT_GE(comparison.fractionWithinTolerance, 0.95);
+    EXPECT_LE(comparison.maxChannelDifference, 2 * 255 / 16 + 2);
+}
+
+} // namespace

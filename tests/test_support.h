@@ -1,0 +1,35 @@
+// What the tests that run the program need: starting it as a user would, finding
+// scenes, and comparing its images with the CPU reference.
+#pragma once
+
+#include "image_compare.h"
+#include "image_io.h"
+#include "reference_renderer.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+struct ProcessResult {
+    int exitCode = -1; // -1 when killed by a signal or the time limit
+    bool timedOut = false;
+    std::string out;
+    std::string err;
+};
+
+// Runs the Raytracer binary with args (no shell), in workingDirectory when given,
+// capturing both streams. Killed after timeoutSeconds.
+ProcessResult runRaytracer(const std::vector<std::string>& args, int timeoutSeconds = 300,
+                           const std::filesystem::path& workingDirectory = {});
+
+// A fresh, empty folder under the build tree for one test's files.
+std::filesystem::path freshOutputDir(const std::string& name);
+
+// The *.scene files of a folder, sorted; empty when the folder is absent.
+std::vector<std::filesystem::path> sceneFilesIn(const std::filesystem::path& folder);
+
+// Writes text to a file (for scene files made by a test).
+void writeTextFile(const std::filesystem::path& path, const std::string& text);
+
+// True when stderr holds a message from the validation layer.
+bool hasValidationMessage(const ProcessResult& result);
