@@ -26,7 +26,7 @@ test: deps build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j 2 --timeout 900
 
 bench: build
-	@tools/bench $(BUILD_DIR)/Raytracer
+	@VK_ICD_FILENAMES=$${VK_ICD_FILENAMES:-} tools/bench $(BUILD_DIR)/Raytracer
 
 clean:
 	@rm -rf $(BUILD_DIR)
