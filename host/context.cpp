@@ -173,6 +173,7 @@ void createInstance(Context& context, const std::vector<const char*>& extensions
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(context.instance, "vkCreateDebugUtilsMessengerEXT"));
         VK_CHECK(create(context.instance, &messengerInfo, nullptr, &context.messenger));
+        std::fprintf(stderr, "Validation: %s on; any message fails the run\n", kValidationLayer);
     }
 }
 

@@ -115,6 +115,25 @@ TEST(CommandLine, WithoutDisplayTheWindowModeRendersHeadless) {
     EXPECT_EQ(readPng(dir / "input.png").width, 32);
 }
 
+TEST(CommandLine, ValidationIsOnAndAnyMessageFailsTheRun) {
+    // The clean runs of the other tests prove nothing unless the layer is really on
+    // and its messages really fail the run: the best-practices checks (which the
+    // project does not follow, e.g. small allocations) provoke some on purpose.
+    std::filesystem::path dir = freshOutputDir("cli/validation");
+    std::filesystem::path scene = writeScene(dir, minimalScene());
+    std::vector<std::string> args = {scene.string(), "-o", (dir / "out.png").string(), "--width", "16",
+                                     "--height", "16", "--validate"};
+    ProcessResult clean = runRaytracer(args);
+    EXPECT_EQ(clean.exitCode, 0) << clean.err;
+    EXPECT_NE(clean.err.find("Validation: VK_LAYER_KHRONOS_validation on"), std::string::npos) << clean.err;
+
+    setenv("VK_LAYER_ENABLES", "VK_VALIDATION_FEATURE_ENABLE_BEST_PRACTICES_EXT", 1);
+    ProcessResult noisy = runRaytracer(args);
+    unsetenv("VK_LAYER_ENABLES");
+    EXPECT_EQ(noisy.exitCode, 4) << noisy.err;
+    EXPECT_NE(noisy.err.find("error: the validation layer printed"), std::string::npos) << noisy.err;
+}
+
 TEST(CommandLine, BenchPrintsOneJsonLineWithEveryKey) {
     std::filesystem::path dir = freshOutputDir("cli/bench");
     std::filesystem::path scene = writeScene(dir, minimalScene());
