@@ -90,6 +90,7 @@ void writeTextFile(const std::filesystem::path& path, const std::string& text) {
 }
 
 bool hasValidationMessage(const ProcessResult& result) {
-    return result.err.find("validation") != std::string::npos ||
-           result.err.find("Validation") != std::string::npos;
+    // The program's messenger prefixes every message it relays (host/context.cpp).
+    return result.err.find("validation error: ") != std::string::npos ||
+           result.err.find("validation warning: ") != std::string::npos;
 }

@@ -31,5 +31,5 @@ std::vector<std::filesystem::path> sceneFilesIn(const std::filesystem::path& fol
 // Writes text to a file (for scene files made by a test).
 void writeTextFile(const std::filesystem::path& path, const std::string& text);
 
-// True when stderr holds a message from the validation layer.
+// True when stderr holds a message relayed from the validation layer.
 bool hasValidationMessage(const ProcessResult& result);

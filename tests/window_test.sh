@@ -1,0 +1,184 @@
+#!/usr/bin/env bash
+# The interactive window under Xvfb: it must show exactly the pixels of the headless
+# PNG (tolerance 0), re-render at the new size after a resize, quit on Escape or Q
+# with status 0, and keep the validation layer silent throughout.
+#
+# usage: window_test.sh RAYTRACER SCENES_DIR OUTPUT_DIR IMAGE_DIFF
+# Needs xvfb-run, xauth, xwininfo (x11-utils), xwd (x11-apps), xdotool and python3
+# (tools/install_deps.sh). The window is captured with xwd and converted to PNG by a
+# small python3 reader below, so ImageMagick is not needed.
+set -euo pipefail
+
+readonly WIDTH=320 HEIGHT=240               # the window as opened
+readonly RESIZED_WIDTH=400 RESIZED_HEIGHT=300 # after `xdotool windowsize`
+readonly WINDOW_DEADLINE=90 # seconds for the first frame (lavapipe with validation starts slowly)
+readonly EXIT_DEADLINE=30   # seconds from the key press to the process's exit
+
+# xwd dump (TrueColor, 24 or 32 bits per pixel) to an RGB PNG, standard library only.
+xwd_to_png() {
+    timeout 30 python3 - "$1" "$2" <<'PY'
+import struct, sys, zlib
+data = open(sys.argv[1], "rb").read()
+(header_size, _version, pixmap_format, _depth, width, height, _xoffset, byte_order, _unit,
+ _bit_order, _pad, bits_per_pixel, bytes_per_line, visual_class, red_mask, green_mask,
+ blue_mask, _bits_per_rgb, _entries, ncolors) = struct.unpack(">20I", data[:80])
+if pixmap_format != 2 or visual_class not in (4, 5) or bits_per_pixel not in (24, 32):
+    sys.exit(f"xwd: unsupported dump (format {pixmap_format}, visual {visual_class}, {bits_per_pixel} bpp)")
+pixels = header_size + 12 * ncolors  # the header, then ncolors 12-byte colormap entries
+step, order = bits_per_pixel // 8, "little" if byte_order == 0 else "big"
+def channel(value, mask):  # the masked bits, scaled to 8 bits
+    shift = (mask & -mask).bit_length() - 1
+    return ((value & mask) >> shift) * 255 // (mask >> shift)
+rows = bytearray()
+for y in range(height):
+    rows.append(0)  # PNG filter type: none
+    line = pixels + y * bytes_per_line
+    for x in range(width):
+        value = int.from_bytes(data[line + x * step:line + (x + 1) * step], order)
+        rows += bytes((channel(value, red_mask), channel(value, green_mask), channel(value, blue_mask)))
+def chunk(kind, body):
+    return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
+with open(sys.argv[2], "wb") as png:
+    png.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0))
+              + chunk(b"IDAT", zlib.compress(bytes(rows))) + chunk(b"IEND", b""))
+print(f"{width}x{height}")
+PY
+}
+
+# The id of the window whose title says it shows SCENE at WxH with a frame time.
+find_window() { # NAME W H
+    timeout 10 xwininfo -root -tree | grep -F "\"$1 - $2x$3 - " | grep -E ' ms": ' |
+        awk '{ print $1 }' | head -n 1 || true
+}
+
+passed=0 failed=0
+pass() { echo "PASS: $*"; passed=$((passed + 1)); }
+fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
+
+# Waits for the window of NAME at WxH, then captures it until it equals EXPECTED.PNG.
+# The present may reach the X server a moment after the title changes, so a few
+# captures are allowed; a wrong pixel stays wrong in all of them.
+check_window_shows() { # PID NAME W H EXPECTED.PNG PREFIX
+    local pid=$1 name=$2 width=$3 height=$4 expected=$5 prefix=$6 id="" deadline=$((SECONDS + WINDOW_DEADLINE))
+    while [[ -z $id ]]; do
+        if ! kill -0 "$pid" 2>/dev/null; then fail "$prefix: the program ended before showing ${width}x${height}"; return 1; fi
+        if ((SECONDS > deadline)); then fail "$prefix: no window titled '$name - ${width}x${height} - ... ms' within ${WINDOW_DEADLINE} s"; return 1; fi
+        sleep 0.5
+        id=$(find_window "$name" "$width" "$height")
+    done
+    WINDOW_ID=$id
+    local size
+    for _ in 1 2 3 4 5 6; do
+        sleep 0.5
+        timeout 10 xwd -id "$id" -silent > "$prefix.xwd" || true
+        size=$(xwd_to_png "$prefix.xwd" "$prefix.png") || size="unreadable (see $prefix.xwd)"
+        if [[ $size != "${width}x${height}" ]]; then
+            fail "$prefix: the window's client area is $size, expected ${width}x${height}"
+            return 1
+        fi
+        if timeout 30 "$image_diff" "$expected" "$prefix.png" --tolerance 0 --min-match 100 \
+            --diff "$prefix-diff.png" > "$prefix-diff.txt"; then
+            pass "$prefix: the window shows the headless pixels exactly ($(cat "$prefix-diff.txt"))"
+            return 0
+        fi
+    done
+    fail "$prefix: the window differs from the headless render: $(cat "$prefix-diff.txt")" \
+         "(headless $expected, window $prefix.png, diff $prefix-diff.png)"
+    return 1
+}
+
+# Sends KEY to the window and expects a clean exit: status 0, no validation message.
+check_quits() { # PID KEY LOG PREFIX
+    local pid=$1 key=$2 log=$3 prefix=$4 deadline=$((SECONDS + EXIT_DEADLINE)) status=0
+    # Key press only: the program quits on the press, so a release would find no window.
+    timeout 10 xdotool keydown --window "$WINDOW_ID" "$key" || true
+    while kill -0 "$pid" 2>/dev/null && ((SECONDS <= deadline)); do sleep 0.2; done
+    if kill -0 "$pid" 2>/dev/null; then
+        kill "$pid"
+        wait "$pid" || true
+        fail "$prefix: still running ${EXIT_DEADLINE} s after the $key key (log $log)"
+        return
+    fi
+    wait "$pid" || status=$?
+    if ((status != 0)); then
+        fail "$prefix: exited with status $status after the $key key (log $log)"
+    elif grep -qiE "validation (error|warning)|VUID-" "$log"; then
+        fail "$prefix: the validation layer spoke (log $log)"
+    elif ! grep -qF "Window: Esc or Q quits" "$log"; then
+        fail "$prefix: no help line on stderr (log $log)"
+    else
+        pass "$prefix: $key quit the window cleanly, validation silent"
+    fi
+}
+
+# Headless renders of SCENE at WxH (no display at all, as a user without one would run it).
+render_headless() { # SCENE W H OUT.PNG
+    env -u DISPLAY timeout 120 "$raytracer" "$1" --validate -o "$4" --width "$2" --height "$3" \
+        > "$4.log" 2>&1 || { fail "headless render of $1 at $2x$3 failed (log $4.log)"; return 1; }
+}
+
+# One scene: headless renders, then the window, a resize (for the first scene) and a quit.
+test_scene() { # SCENE KEY RESIZE(yes|no)
+    local scene=$1 key=$2 resize=$3 name stem pid
+    name=$(basename "$scene")
+    stem=${name%.scene}
+    render_headless "$scene" "$WIDTH" "$HEIGHT" "$stem-headless.png" || return 0
+    if [[ $resize == yes ]]; then
+        render_headless "$scene" "$RESIZED_WIDTH" "$RESIZED_HEIGHT" "$stem-headless-resized.png" || return 0
+    fi
+    timeout 120 "$raytracer" "$scene" --validate --width "$WIDTH" --height "$HEIGHT" > "$stem-window.log" 2>&1 &
+    pid=$!
+    if ! check_window_shows "$pid" "$name" "$WIDTH" "$HEIGHT" "$stem-headless.png" "$stem-window"; then
+        kill "$pid" 2>/dev/null || true
+        wait "$pid" || true
+        return 0
+    fi
+    if [[ $resize == yes ]]; then
+        # Several sizes in a row: swapchain recreation under pressure, ending at one size.
+        timeout 10 xdotool windowsize "$WINDOW_ID" 240 180 windowsize "$WINDOW_ID" 520 390 \
+            windowsize "$WINDOW_ID" "$RESIZED_WIDTH" "$RESIZED_HEIGHT" || fail "$stem: xdotool windowsize failed"
+        check_window_shows "$pid" "$name" "$RESIZED_WIDTH" "$RESIZED_HEIGHT" \
+            "$stem-headless-resized.png" "$stem-window-resized" || true
+    fi
+    check_quits "$pid" "$key" "$stem-window.log" "$stem-window"
+}
+
+# Inside Xvfb: everything runs in OUTPUT_DIR, which keeps the images and logs.
+run_inside_xvfb() {
+    cd "$output_dir"
+    local scenes=() first
+    [[ -f $scenes_dir/showcase.scene ]] && scenes+=("$scenes_dir/showcase.scene")
+    for first in "$scenes_dir"/*.scene; do
+        [[ -f $first && ${#scenes[@]} -lt 2 && $first != "${scenes[0]-}" ]] && scenes+=("$first")
+    done
+    if ((${#scenes[@]} == 0)); then
+        echo "window test: no *.scene in $scenes_dir"
+        exit 1
+    fi
+    test_scene "${scenes[0]}" Escape yes
+    [[ ${#scenes[@]} -gt 1 ]] && test_scene "${scenes[1]}" q no
+    echo "window test: $passed passed, $failed failed (images and logs in $output_dir)"
+    ((failed == 0))
+}
+
+if [[ $# == 5 && $1 == --inside-xvfb ]]; then
+    shift
+    raytracer=$1 scenes_dir=$2 output_dir=$3 image_diff=$4
+    run_inside_xvfb
+    exit
+fi
+
+if (($# != 4)); then
+    echo "usage: $0 RAYTRACER SCENES_DIR OUTPUT_DIR IMAGE_DIFF" >&2
+    exit 2
+fi
+for tool in xvfb-run xauth xwininfo xwd xdotool python3 timeout; do
+    command -v "$tool" > /dev/null || { echo "window test: $tool is missing (tools/install_deps.sh)"; exit 1; }
+done
+mkdir -p "$3"
+absolute() { echo "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; }
+raytracer=$(absolute "$1") scenes_dir=$(absolute "$2") output_dir=$(absolute "$3") image_diff=$(absolute "$4")
+rm -f "$output_dir"/*.png "$output_dir"/*.xwd "$output_dir"/*.log "$output_dir"/*.txt
+# One X server for the whole test, on a free display number (-a).
+timeout 280 xvfb-run -a -s "-screen 0 1024x768x24" \
+    "$(absolute "$0")" --inside-xvfb "$raytracer" "$scenes_dir" "$output_dir" "$image_diff"
