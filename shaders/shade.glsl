@@ -1,0 +1,104 @@
+// Surface data at a hit and Phong shading with hard shadows, as the SPEC defines them.
+// Needs: Ray, Hit, anyHit (camera.glsl, intersect.glsl), offsetRayOrigin (ray_offset.glsl).
+
+// Everything shading needs about a hit point.
+struct SurfacePoint {
+    vec3 position;
+    vec3 magnitude;       // per coordinate, sum of |terms| that position was computed from
+    vec3 geometricNormal; // unit, either side: the side a new ray leaves on picks the sign
+    vec3 normal;          // unit shading normal, flipped to face the incoming ray
+    vec3 kd;              // diffuse colour
+    vec3 ks;              // specular colour, also the mirror weight
+    float shininess;      // Phong exponent
+};
+
+// v scaled to unit length, or fallback when v is zero (normalize(0) is NaN on lavapipe);
+// dividing by the largest component first keeps tiny and huge vectors in range.
+vec3 normalizeOr(vec3 v, vec3 fallback) {
+    float m = max(abs(v.x), max(abs(v.y), abs(v.z)));
+    return m > 0.0 ? normalize(v / m) : fallback;
+}
+
+// Position, normals and material at a hit. Sphere: N = (P - C) / r, with P projected back
+// onto the sphere; triangle: P, the vertex normals and the materials interpolated with
+// the barycentrics, the geometric normal normalize(cross(B - A, C - A)) when the
+// interpolated normal is zero.
+SurfacePoint surfaceAt(Ray ray, Hit hit) {
+    SurfacePoint s;
+    if (hit.kind == HIT_SPHERE) {
+        vec4 sphere = spheres[hit.index];
+        vec3 radial = normalizeOr(ray.origin + hit.t * ray.direction - sphere.xyz, -ray.direction);
+        s.position = sphere.xyz + sphere.w * radial;
+        s.magnitude = abs(sphere.xyz) + sphere.w * abs(radial);
+        s.geometricNormal = radial;
+        s.normal = radial;
+        GpuMaterial m = materials[sphereMaterials[hit.index]];
+        s.kd = m.diffuseShininess.xyz;
+        s.ks = m.specular.xyz;
+        s.shininess = m.diffuseShininess.w;
+    } else {
+        uvec3 v = uvec3(triangleVertices[3u * hit.index], triangleVertices[3u * hit.index + 1u],
+                        triangleVertices[3u * hit.index + 2u]);
+        vec3 w = hit.barycentric;
+        vec3 a = vertexPositions[v.x].xyz, b = vertexPositions[v.y].xyz, c = vertexPositions[v.z].xyz;
+        // From the barycentrics rather than o + t d: its error scales with the vertices only.
+        s.position = w.x * a + w.y * b + w.z * c;
+        s.magnitude = w.x * abs(a) + w.y * abs(b) + w.z * abs(c);
+        s.geometricNormal = normalizeOr(cross(b - a, c - a), -ray.direction);
+        vec3 n = w.x * vertexNormals[v.x].xyz + w.y * vertexNormals[v.y].xyz +
+                 w.z * vertexNormals[v.z].xyz;
+        s.normal = normalizeOr(n, s.geometricNormal);
+        GpuMaterial ma = materials[vertexMaterials[v.x]];
+        GpuMaterial mb = materials[vertexMaterials[v.y]];
+        GpuMaterial mc = materials[vertexMaterials[v.z]];
+        vec4 kdShininess = w.x * ma.diffuseShininess + w.y * mb.diffuseShininess +
+                           w.z * mc.diffuseShininess;
+        s.kd = kdShininess.xyz;
+        s.shininess = kdShininess.w;
+        s.ks = w.x * ma.specular.xyz + w.y * mb.specular.xyz + w.z * mc.specular.xyz;
+    }
+    if (dot(s.normal, ray.direction) > 0.0) s.normal = -s.normal;
+    return s;
+}
+
+// A ray from the surface point in direction d (unit), its origin offset to the side of the
+// surface d leaves on, so it cannot hit the surface it starts from.
+Ray leavingRay(SurfacePoint s, vec3 d) {
+    vec3 side = dot(s.geometricNormal, d) > 0.0 ? s.geometricNormal : -s.geometricNormal;
+    return Ray(offsetRayOrigin(s.position, side, s.magnitude), d);
+}
+
+// Whether any surface lies strictly between the point and the light (unit direction l):
+// an any-hit shadow ray from the offset origin, limited to the distance to the light.
+bool inShadow(SurfacePoint s, vec3 lightPosition, vec3 l) {
+    Ray ray = leavingRay(s, l);
+    vec3 toLight = lightPosition - ray.origin;
+    float lightDistance = length(toLight);
+    ray.direction = toLight / lightDistance;
+    return anyHit(ray, lightDistance);
+}
+
+// Local Phong colour seen along direction -view: ambient once, then per unshadowed light
+// in front of the surface Lc * (kd dot(N,L) + ks max(dot(R,V),0)^shininess).
+vec3 shadePhong(SurfacePoint s, vec3 view) {
+    vec3 colour = params.ambient.rgb;
+    for (uint i = 0u; i < params.counts.z; ++i) {
+        GpuLight light = lights[i];
+        // A light exactly at the point has no direction: l = 0 skips it below.
+        vec3 l = normalizeOr(light.position.xyz - s.position, vec3(0.0));
+        float nDotL = dot(s.normal, l);
+        if (nDotL <= 0.0) continue;
+        if (inShadow(s, light.position.xyz, l)) continue;
+        vec3 r = 2.0 * nDotL * s.normal - l;
+        float rDotV = dot(r, view);
+        // pow(x, 0) is 1 for x > 0; the test keeps pow away from 0 and negative bases.
+        vec3 specular = rDotV > 0.0 ? s.ks * pow(rDotV, s.shininess) : vec3(0.0);
+        colour += light.color.rgb * (s.kd * nDotL + specular);
+    }
+    return colour;
+}
+
+// The mirror ray at the surface: direction D - 2 dot(D, N) N with the facing shading normal.
+Ray reflectedRay(Ray ray, SurfacePoint s) {
+    return leavingRay(s, normalize(reflect(ray.direction, s.normal)));
+}

@@ -1,0 +1,78 @@
+#version 460
+// The ray tracing kernel: one invocation per pixel of the current tile. Whitted-style
+// tracing of the SPEC's model: primary ray, Phong shading with hard shadows, mirror
+// reflections as an iterative loop with a throughput, clamped samples averaged, written as
+// an exact 8-bit value.
+#extension GL_GOOGLE_include_directive : require
+
+#include "shared.h"
+
+layout(local_size_x = WORKGROUP_SIZE_X, local_size_y = WORKGROUP_SIZE_Y, local_size_z = 1) in;
+
+// Camera, counts, image size, samples and depth for this dispatch (see GpuFrameParams).
+layout(push_constant) uniform FrameParamsBlock {
+    GpuFrameParams params;
+};
+
+// The RGBA8 UNORM image this kernel writes; the host copies it to the screen or a PNG.
+layout(set = 0, binding = BINDING_OUTPUT_IMAGE, rgba8) uniform writeonly image2D outputImage;
+
+// Scene arrays. Their lengths are params.counts, never .length(): an empty array is bound
+// to a small dummy buffer.
+// Spheres: centre in xyz, radius in w.
+layout(set = 0, binding = BINDING_SPHERES, std430) readonly buffer SphereBuffer { vec4 spheres[]; };
+// Per sphere, the index of its material in materials[].
+layout(set = 0, binding = BINDING_SPHERE_MATERIALS, std430) readonly buffer SphereMaterialBuffer { uint sphereMaterials[]; };
+// Per triangle, three consecutive indices into the vertex arrays.
+layout(set = 0, binding = BINDING_TRIANGLES, std430) readonly buffer TriangleBuffer { uint triangleVertices[]; };
+// Per vertex, its position in xyz.
+layout(set = 0, binding = BINDING_VERTEX_POSITIONS, std430) readonly buffer PositionBuffer { vec4 vertexPositions[]; };
+// Per vertex, its normal in xyz as the scene file gives it (maybe unnormalised or zero).
+layout(set = 0, binding = BINDING_VERTEX_NORMALS, std430) readonly buffer NormalBuffer { vec4 vertexNormals[]; };
+// Per vertex, the index of its material in materials[].
+layout(set = 0, binding = BINDING_VERTEX_MATERIALS, std430) readonly buffer VertexMaterialBuffer { uint vertexMaterials[]; };
+// The distinct materials of the scene.
+layout(set = 0, binding = BINDING_MATERIALS, std430) readonly buffer MaterialBuffer { GpuMaterial materials[]; };
+// The point lights.
+layout(set = 0, binding = BINDING_LIGHTS, std430) readonly buffer LightBuffer { GpuLight lights[]; };
+
+#include "camera.glsl"
+#include "ray_offset.glsl"
+#include "intersect.glsl"
+#include "shade.glsl"
+
+// Colour seen along a primary ray: the SPEC's recursion
+//   colour = (1 - ks) local + ks colour(reflected)   (local alone when ks == 0 or at depth D)
+// unrolled into a loop that carries the product of the ks seen so far (throughput).
+vec3 traceRay(Ray ray) {
+    uint maxBounces = min(params.image.w, uint(MAX_DEPTH));
+    vec3 colour = vec3(0.0);
+    vec3 throughput = vec3(1.0);
+    for (uint bounce = 0u;; ++bounce) {
+        Hit hit = closestHit(ray);
+        if (hit.kind == HIT_NONE) return colour + throughput * params.background.rgb;
+        SurfacePoint s = surfaceAt(ray, hit);
+        vec3 local = shadePhong(s, -ray.direction);
+        if (all(equal(s.ks, vec3(0.0))) || bounce >= maxBounces) return colour + throughput * local;
+        colour += throughput * (1.0 - s.ks) * local;
+        throughput *= s.ks;
+        // Nothing further can contribute: same result, fewer rays.
+        if (all(equal(throughput, vec3(0.0)))) return colour;
+        ray = reflectedRay(ray, s);
+    }
+}
+
+void main() {
+    uvec2 pixel = params.tile.xy + gl_GlobalInvocationID.xy;
+    if (any(greaterThanEqual(pixel, params.image.xy))) return;
+
+    uint samples = max(params.image.z, 1u);
+    vec3 sum = vec3(0.0);
+    for (uint s = 0u; s < samples; ++s) {
+        sum += clamp(traceRay(cameraRay(pixel, sampleOffset(pixel, s, samples))), 0.0, 1.0);
+    }
+    // floor(c * 255 + 0.5) here, stored as k / 255: the UNORM conversion then gives exactly k
+    // whatever the driver's rounding (k / 255 * 255 rounds back to k for every k).
+    vec3 level = floor(sum / float(samples) * 255.0 + 0.5);
+    imageStore(outputImage, ivec2(pixel), vec4(level / 255.0, 1.0));
+}
