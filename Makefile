@@ -3,7 +3,7 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 SCENE ?= scenes/showcase.scene
 
-.PHONY: all build deps configure run test bench clean
+.PHONY: all build deps bench-deps configure run test bench clean
 
 all: build
 
@@ -25,8 +25,14 @@ run: deps build
 test: deps build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j 2 --timeout 900
 
-bench: build
-	@VK_ICD_FILENAMES=$${VK_ICD_FILENAMES:-} tools/bench $(BUILD_DIR)/Raytracer
+# Set-up with the benchmark's extras (Embree, matplotlib), build (embree_peer is built
+# once Embree is there), then Raytracer against its CPU peers: tables on stdout, CSV and
+# chart under $(BUILD_DIR)/bench/. BENCH_ARGS=--quick for a fast check.
+bench: bench-deps build
+	@VK_ICD_FILENAMES=$${VK_ICD_FILENAMES:-} tools/bench $(BUILD_DIR)/Raytracer $(BENCH_ARGS)
+
+bench-deps:
+	@tools/install_deps.sh --bench
 
 clean:
 	@rm -rf $(BUILD_DIR)

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <ctime>
+#include <fstream>
 #include <sstream>
+#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -37,19 +40,53 @@ std::string jsonNumber(double value) {
     return text;
 }
 
+// The process's start time in seconds since boot (field 22 of /proc/self/stat), or a
+// negative value if it cannot be read.
+double processStartSecondsSinceBoot() {
+    std::ifstream file("/proc/self/stat");
+    std::string stat;
+    std::getline(file, stat);
+    // Field 2, the command name, is in parentheses and may hold spaces: count after it.
+    std::size_t close = stat.rfind(')');
+    if (close == std::string::npos) return -1.0;
+    std::istringstream fields(stat.substr(close + 1));
+    std::string field;
+    for (int index = 3; index <= 22 && fields >> field; ++index)
+        if (index == 22) return double(std::stoull(field)) / double(sysconf(_SC_CLK_TCK));
+    return -1.0;
+}
+
 } // namespace
 
+std::chrono::steady_clock::time_point processStartTime() {
+    const auto now = std::chrono::steady_clock::now();
+    timespec boot{};
+    const double started = processStartSecondsSinceBoot();
+    // The kernel counts the start time on CLOCK_BOOTTIME.
+    if (started < 0 || clock_gettime(CLOCK_BOOTTIME, &boot) != 0) return now;
+    const double age = double(boot.tv_sec) + double(boot.tv_nsec) * 1e-9 - started;
+    if (age < 0 || age > 60.0)
+        return now; // not a plausible age for a process calling this from main()
+    return now - std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                     std::chrono::duration<double>(age));
+}
+
 std::string runBenchmark(const Context& context, const Renderer& renderer, HeadlessTarget& target,
-                         const Options& options, std::chrono::steady_clock::time_point processStart) {
+                         const Options& options, const StartupTimes& startup) {
     renderHeadlessFrame(target, context, renderer);
-    double startupMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - processStart).count();
-    for (int i = 1; i < kWarmUpFrames; ++i) renderHeadlessFrame(target, context, renderer);
+    double startupMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
+                                                                 startup.processStart)
+                           .count();
+    for (int i = 1; i < kWarmUpFrames; ++i)
+        renderHeadlessFrame(target, context, renderer);
 
     std::vector<double> wallMs, gpuMs;
+    std::uint32_t submissions = 0;
     for (std::uint32_t frame = 0; frame < options.benchFrames; ++frame) {
-        wallMs.push_back(renderHeadlessFrame(target, context, renderer));
-        gpuMs.push_back(lastTraceGpuMilliseconds(renderer, context));
+        FrameTiming timing = renderHeadlessFrame(target, context, renderer);
+        wallMs.push_back(timing.wallMs);
+        gpuMs.push_back(timing.gpuMs);
+        submissions = timing.submissions;
     }
     const RenderSettings& settings = renderer.settings;
     double pixels = double(settings.width) * settings.height;
@@ -63,13 +100,14 @@ std::string runBenchmark(const Context& context, const Renderer& renderer, Headl
          << ", \"device\": " << jsonString(context.properties.deviceName)
          << ", \"wall_ms_median\": " << jsonNumber(wallMedian)
          << ", \"wall_ms_min\": " << jsonNumber(*std::min_element(wallMs.begin(), wallMs.end()))
-         << ", \"gpu_ms_median\": " << (context.timestampsSupported ? jsonNumber(median(gpuMs)) : "null")
+         << ", \"gpu_ms_median\": "
+         << (context.timestampsSupported ? jsonNumber(median(gpuMs)) : "null")
          << ", \"startup_ms\": " << jsonNumber(startupMs)
-         << ", \"gpu_bytes\": " << renderer.scene.bytes
+         << ", \"parse_ms\": " << jsonNumber(startup.parseMs)
+         << ", \"submissions\": " << submissions << ", \"gpu_bytes\": " << renderer.scene.bytes
          << ", \"spheres\": " << renderer.scene.sphereCount
          << ", \"triangles\": " << renderer.scene.triangleCount
-         << ", \"lights\": " << renderer.scene.lightCount
-         << ", \"primary_rays_per_second\": "
+         << ", \"lights\": " << renderer.scene.lightCount << ", \"primary_rays_per_second\": "
          << jsonNumber(pixels * settings.samplesPerPixel / (wallMedian * 1e-3)) << "}";
     return json.str();
 }

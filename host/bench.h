@@ -7,7 +7,19 @@
 #include <chrono>
 #include <string>
 
+// When the process started, on the steady clock: the kernel's record of it
+// (/proc/self/stat, in clock ticks of 10 ms, rounded down, so a start-up measured
+// from it may read up to one tick long), so the dynamic loader's work and static
+// initialisation count too. Falls back to now (call it first thing in main) where
+// /proc is not available.
+std::chrono::steady_clock::time_point processStartTime();
+
+struct StartupTimes {
+    std::chrono::steady_clock::time_point processStart; // processStartTime()
+    double parseMs = 0;                                 // reading and parsing the scene file
+};
+
 // Renders warm-up frames, then options.benchFrames timed ones, and returns the
-// JSON object of SPEC.md ("--bench"). processStart is when main() began.
+// JSON object of SPEC.md ("--bench") with parse_ms and per-frame submissions added.
 std::string runBenchmark(const Context& context, const Renderer& renderer, HeadlessTarget& target,
-                         const Options& options, std::chrono::steady_clock::time_point processStart);
+                         const Options& options, const StartupTimes& startup);

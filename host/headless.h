@@ -1,20 +1,36 @@
-// Headless frames: trace, copy the output image to host memory, wait. No window system.
+// Headless frames: trace in several short submissions, copy the output image to host
+// memory, wait. No window system.
 #pragma once
 
 #include "image_io.h"
+#include "progress.h"
 #include "renderer.h"
+#include "tile_scheduler.h"
 
 struct HeadlessTarget {
     Buffer readbackBuffer; // host-visible copy of the output image, tightly packed RGBA8
     VkCommandBuffer commands = VK_NULL_HANDLE;
-    VkFence frameDone = VK_NULL_HANDLE;
+    VkFence submissionDone = VK_NULL_HANDLE;
+    TileScheduler scheduler; // what each submission traces; learns across frames
 };
 
-void createHeadlessTarget(HeadlessTarget& target, const Context& context, const Renderer& renderer);
+// What one frame cost.
+struct FrameTiming {
+    double wallMs = 0; // first submit to last fence, the host's work in between included
+    double gpuMs = 0;  // sum of the timestamp intervals of the regions; < 0 without timestamps
+    std::uint32_t submissions = 0;
+    double longestSubmissionMs = 0; // submit to fence
+};
 
-// Traces one frame and copies it to the readback buffer; returns the wall time from
-// submit to fence in milliseconds.
-double renderHeadlessFrame(HeadlessTarget& target, const Context& context, const Renderer& renderer);
+// fixedTileSide > 0 (--tile-size) makes every region that square; 0 adapts the regions
+// to about kTargetSubmissionMs each.
+void createHeadlessTarget(HeadlessTarget& target, const Context& context, const Renderer& renderer,
+                          std::uint32_t fixedTileSide = 0);
+
+// Traces one frame, region by region, and copies it to the readback buffer.
+FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context,
+                                const Renderer& renderer,
+                                ProgressMode progress = ProgressMode::Off);
 
 // The last rendered frame as an image.
 Image8 readHeadlessImage(const HeadlessTarget& target, const Renderer& renderer);

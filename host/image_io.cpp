@@ -73,6 +73,10 @@ void writePng(const std::filesystem::path& path, const Image8& image) {
         const auto* bytes = static_cast<const std::uint8_t*>(data);
         out->insert(out->end(), bytes, bytes + size);
     };
+    // The "Sub" filter on every row, instead of stb's per-row trial of all five: on
+    // rendered images it encodes about a third faster and a few percent smaller
+    // (measured on test2 and showcase at 640x480), and encoding is part of start-up.
+    stbi_write_force_png_filter = 1;
     if (!stbi_write_png_to_func(append, &encoded, image.width, image.height, 4, image.rgba.data(),
                                 image.width * 4))
         fail(path, "PNG encoder failed");

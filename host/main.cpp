@@ -3,6 +3,7 @@
 #include "bench.h"
 #include "headless.h"
 #include "options.h"
+#include "pipeline_cache.h"
 #include "scene.h"
 #include "shader_compiler.h"
 #include "vk_check.h"
@@ -24,8 +25,7 @@ enum ExitStatus {
 };
 
 // Renders headless: either one frame to options.outputPath, or a benchmark.
-void runHeadless(const Options& options, const Scene& scene,
-                 std::chrono::steady_clock::time_point processStart) {
+void runHeadless(const Options& options, const Scene& scene, const StartupTimes& startup) {
     Context context;
     Renderer renderer;
     HeadlessTarget target;
@@ -33,13 +33,16 @@ void runHeadless(const Options& options, const Scene& scene,
         createInstance(context, {}, options.validate);
         createDevice(context, options.device);
         RenderSettings settings{options.width, options.height, options.samplesPerPixel, options.depth,
-                                glm::vec3(options.background), options.fovDegrees};
+                                glm::vec3(options.background), options.fovDegrees,
+                                options.acceleration};
+        settings.cacheDirectory = userCacheDirectory(options.useCache);
         createRenderer(renderer, context, scene, settings);
-        createHeadlessTarget(target, context, renderer);
+        createHeadlessTarget(target, context, renderer, options.tileSide);
         if (options.benchFrames > 0) {
-            std::cout << runBenchmark(context, renderer, target, options, processStart) << std::endl;
+            std::cout << runBenchmark(context, renderer, target, options, startup) << std::endl;
         } else {
-            renderHeadlessFrame(target, context, renderer);
+            renderHeadlessFrame(target, context, renderer,
+                                options.progress ? ProgressMode::Always : ProgressMode::Auto);
             writePng(options.outputPath, readHeadlessImage(target, renderer));
         }
     } catch (...) {
@@ -54,12 +57,16 @@ void runHeadless(const Options& options, const Scene& scene,
 }
 
 int run(int argc, char** argv, std::chrono::steady_clock::time_point processStart) {
+    StartupTimes startup{processStart, 0.0};
     Options options = parseOptions(argc, argv);
     if (options.showHelp) {
         std::cout << usageText();
         return kSuccess;
     }
+    const auto parseStart = std::chrono::steady_clock::now();
     Scene scene = loadScene(options.scenePath);
+    startup.parseMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - parseStart).count();
     for (const std::string& warning : scene.warnings) std::cerr << warning << '\n';
 
     bool headless = !options.outputPath.empty() || options.benchFrames > 0;
@@ -68,7 +75,7 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
         std::cerr << "No display: rendering headless to " << options.outputPath.string() << '\n';
         headless = true;
     }
-    if (headless) runHeadless(options, scene, processStart);
+    if (headless) runHeadless(options, scene, startup);
     if (headless && options.benchFrames == 0) std::cerr << "Wrote " << options.outputPath.string() << '\n';
 
     if (options.validate && validationMessageCount() > 0) {
@@ -81,7 +88,7 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
 } // namespace
 
 int main(int argc, char** argv) {
-    const auto processStart = std::chrono::steady_clock::now();
+    const auto processStart = processStartTime();
     try {
         return run(argc, argv, processStart);
     } catch (const UsageError& error) {

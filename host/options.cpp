@@ -57,7 +57,11 @@ std::string usageText() {
            "  --fov DEG             vertical field of view in degrees (default 60)\n"
            "  --bench N             render N frames headless after a warm-up, print JSON timings\n"
            "  --device NAME|INDEX   use this Vulkan device (default: a real GPU before a CPU one)\n"
+           "  --accel auto|bvh|none  bounding volume hierarchy, or test every primitive (default\n"
+           "                        auto: the hierarchy from " + std::to_string(kBvhAutoThreshold) + " primitives up)\n"
            "  --validate            enable the Khronos validation layer; any message fails the run\n"
+           "  --no-cache            neither read nor write the shader cache ($XDG_CACHE_HOME/raytracer)\n"
+           "  --progress            report progress on stderr even for a render under a second\n"
            "  -h, --help            show this help\n"
            "\n"
            "Window keys: Esc or Q quits.\n";
@@ -95,8 +99,20 @@ Options parseOptions(int argc, const char* const* argv) {
             options.benchFrames = parseCount(arg, value(), 1, 100000);
         } else if (arg == "--device") {
             options.device = value();
+        } else if (arg == "--accel") {
+            const std::string& mode = value();
+            if (mode == "auto") options.acceleration = Acceleration::Auto;
+            else if (mode == "bvh") options.acceleration = Acceleration::Bvh;
+            else if (mode == "none") options.acceleration = Acceleration::None;
+            else throw UsageError("--accel expects auto, bvh or none, got '" + mode + "'");
         } else if (arg == "--validate") {
             options.validate = true;
+        } else if (arg == "--no-cache") {
+            options.useCache = false;
+        } else if (arg == "--tile-size") {
+            options.tileSide = parseCount(arg, value(), 1, 16384);
+        } else if (arg == "--progress") {
+            options.progress = true;
         } else if (arg.size() > 1 && arg[0] == '-') {
             throw UsageError("unknown option '" + arg + "' (see --help)");
         } else if (options.scenePath.empty()) {

@@ -1,6 +1,8 @@
 // The command line, turned into one plain struct (see SPEC.md "Command line").
 #pragma once
 
+#include "bvh.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -20,7 +22,11 @@ struct Options {
     std::uint32_t benchFrames = 0; // > 0: --bench N
     std::string device;            // --device NAME|INDEX; empty picks the best
     bool validate = false;         // --validate: Khronos layer on, any message fails the run
+    Acceleration acceleration = Acceleration::Auto; // --accel auto|bvh|none
     bool showHelp = false;
+    bool useCache = true;       // --no-cache: no shader or pipeline cache on disk
+    std::uint32_t tileSide = 0; // --tile-size N (hidden, for tests): fixed N x N submissions; 0 adapts
+    bool progress = false;      // --progress: report progress even for a short render
 };
 
 // A command line that does not make sense; what() is the message for the user.

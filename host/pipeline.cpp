@@ -1,11 +1,37 @@
 #include "pipeline.h"
 
+#include "cache_file.h"
+#include "embedded_shaders.h"
+#include "pipeline_cache.h"
+#include "shader_compiler.h"
 #include "shared.h"
 #include "vk_check.h"
 
-TracePipeline createTracePipeline(const Context& context, const std::vector<std::uint32_t>& spirv) {
-    TracePipeline result;
+#include <glslang/build_info.h>
 
+#include <string>
+
+namespace {
+
+// Everything that decides the SPIR-V: the compiler's version, how it is called (bump
+// the recipe when shader_compiler.cpp's settings change) and every embedded source.
+std::uint64_t traceSourceKey() {
+    const std::string recipe = "trace.comp; glslang " + std::to_string(GLSLANG_VERSION_MAJOR) +
+                               "." + std::to_string(GLSLANG_VERSION_MINOR) + "." +
+                               std::to_string(GLSLANG_VERSION_PATCH) +
+                               "; vulkan1.2 spv1.5 optimized; v1";
+    std::uint64_t key = hashBytes(recipe.data(), recipe.size());
+    for (const auto& [name, text] : embeddedShaderSources()) {
+        key = hashBytes(name.data(), name.size() + 1,
+                        key); // with the NUL: "a"+"bc" differs from "ab"+"c"
+        key = hashBytes(text.data(), text.size(), key);
+    }
+    return key;
+}
+
+// Fills result step by step; the caller destroys what was made if a step throws.
+void buildTracePipeline(TracePipeline& result, const Context& context,
+                        const std::vector<std::uint32_t>& spirv, VkPipelineCache cache) {
     // Binding 0 is the output image the kernel writes; every other binding is a
     // read-only range of the scene buffer (see shaders/shared.h for what each holds).
     std::vector<VkDescriptorSetLayoutBinding> bindings;
@@ -39,17 +65,57 @@ TracePipeline createTracePipeline(const Context& context, const std::vector<std:
     pipelineInfo.stage.module = module;
     pipelineInfo.stage.pName = "main";
     pipelineInfo.layout = result.layout;
-    VkResult created = vkCreateComputePipelines(context.device, VK_NULL_HANDLE, 1, &pipelineInfo,
-                                                nullptr, &result.pipeline);
+    VkResult created = vkCreateComputePipelines(context.device, cache, 1, &pipelineInfo, nullptr,
+                                                &result.pipeline);
     // The module is only needed while the pipeline is created.
     vkDestroyShaderModule(context.device, module, nullptr);
     VK_CHECK(created);
+}
+
+} // namespace
+
+TracePipeline createTracePipeline(const Context& context, const std::vector<std::uint32_t>& spirv,
+                                  VkPipelineCache cache) {
+    TracePipeline result;
+    try {
+        buildTracePipeline(result, context, spirv, cache);
+    } catch (...) {
+        destroyTracePipeline(context, result);
+        throw;
+    }
     return result;
+}
+
+TracePipeline loadTracePipeline(const Context& context,
+                                const std::filesystem::path& cacheDirectory) {
+    const std::uint64_t sourceKey = traceSourceKey();
+    std::vector<std::uint32_t> spirv;
+    if (std::optional<std::vector<std::uint32_t>> cached =
+            loadCachedSpirv(cacheDirectory, sourceKey)) {
+        spirv = std::move(*cached);
+    } else {
+        spirv = compileComputeShader("trace.comp", embeddedShaderLoader());
+        storeCachedSpirv(cacheDirectory, sourceKey, spirv);
+    }
+    PipelineCache cache = openPipelineCache(
+        context, cacheDirectory, hashBytes(spirv.data(), spirv.size() * sizeof(std::uint32_t)));
+    TracePipeline pipeline;
+    try {
+        pipeline = createTracePipeline(context, spirv, cache.cache);
+        savePipelineCache(context, cache);
+    } catch (...) {
+        destroyTracePipeline(context, pipeline);
+        destroyPipelineCache(context, cache);
+        throw;
+    }
+    destroyPipelineCache(context, cache);
+    return pipeline;
 }
 
 void destroyTracePipeline(const Context& context, TracePipeline& pipeline) {
     if (pipeline.pipeline) vkDestroyPipeline(context.device, pipeline.pipeline, nullptr);
     if (pipeline.layout) vkDestroyPipelineLayout(context.device, pipeline.layout, nullptr);
-    if (pipeline.setLayout) vkDestroyDescriptorSetLayout(context.device, pipeline.setLayout, nullptr);
+    if (pipeline.setLayout)
+        vkDestroyDescriptorSetLayout(context.device, pipeline.setLayout, nullptr);
     pipeline = TracePipeline{};
 }

@@ -1,16 +1,18 @@
 #include "renderer.h"
 
-#include "shader_compiler.h"
 #include "shared.h"
 #include "vk_check.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace {
 
-// Each dispatch covers at most this many pixels a side, so a large image is
-// traced in several shorter pieces rather than one long one.
+// Each dispatch covers at most this many pixels a side. How much of the image one
+// submission traces is the caller's choice (host/tile_scheduler.h for headless frames).
 constexpr std::uint32_t kTileSize = 1024;
 
 void createDescriptors(Renderer& renderer, const Context& context) {
@@ -56,9 +58,33 @@ gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t tileX, s
     params.image = glm::uvec4(settings.width, settings.height, settings.samplesPerPixel,
                               std::min<std::uint32_t>(settings.depth, MAX_DEPTH));
     params.counts = glm::uvec4(renderer.scene.sphereCount, renderer.scene.triangleCount,
-                               renderer.scene.lightCount, 0);
+                               renderer.scene.lightCount, renderer.scene.bvhNodeCount);
     params.tile = glm::uvec4(tileX, tileY, 0, 0);
     return params;
+}
+
+// Packs the scene in the hierarchy's leaf order, keeping the hierarchy itself only when
+// it pays (settings.acceleration), and says which on stderr. The leaf order is used
+// either way, so both paths see the same primitive order and break ties alike.
+PackedScene packWithHierarchy(const Scene& scene, Acceleration acceleration) {
+    PackedScene packed = packScene(scene);
+    const auto start = std::chrono::steady_clock::now();
+    BvhSettings bvhSettings; // TEMP-EXPERIMENT
+    if (const char* e = std::getenv("RT_BVH_LEAF")) bvhSettings.maxLeafSize = std::uint32_t(std::atoi(e));
+    if (const char* e = std::getenv("RT_BVH_CT")) bvhSettings.traversalCost = float(std::atof(e));
+    Bvh bvh = buildBvh(primitiveBounds(packed), bvhSettings);
+    const double buildMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    applyLeafOrder(packed, bvh);
+    const std::size_t primitives = packed.spheres.size() + packed.triangleVertices.size() / 3;
+    if (useHierarchy(acceleration, primitives)) {
+        std::fprintf(stderr, "Acceleration: BVH, %zu nodes, depth %u, built in %.1f ms\n", bvh.nodes.size(),
+                     bvh.depth, buildMs);
+        packed.bvhNodes = std::move(bvh.nodes);
+    } else {
+        std::fprintf(stderr, "Acceleration: none, every primitive tested (%zu primitives)\n", primitives);
+    }
+    return packed;
 }
 
 } // namespace
@@ -66,9 +92,12 @@ gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t tileX, s
 void createRenderer(Renderer& renderer, const Context& context, const Scene& scene,
                     const RenderSettings& settings) {
     renderer.settings = settings;
-    renderer.pipeline =
-        createTracePipeline(context, compileComputeShader("trace.comp", embeddedShaderLoader()));
-    renderer.scene = uploadScene(context, packScene(scene));
+    renderer.pipeline = loadTracePipeline(context, settings.cacheDirectory);
+    renderer.scene = uploadScene(context, packWithHierarchy(scene, settings.acceleration));
+    const std::size_t primitives = renderer.scene.sphereCount + renderer.scene.triangleCount;
+    if (primitives > 0)
+        std::fprintf(stderr, "Scene memory: %llu bytes, %.1f bytes per primitive\n",
+                     static_cast<unsigned long long>(renderer.scene.bytes), double(renderer.scene.bytes) / double(primitives));
     createDescriptors(renderer, context);
     if (context.timestampsSupported) {
         VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
@@ -98,13 +127,17 @@ void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t widt
     vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
 }
 
-void recordTrace(const Renderer& renderer, VkCommandBuffer commands) {
-    const Image& output = renderer.outputImage;
+void recordTraceBegin(const Renderer& renderer, VkCommandBuffer commands) {
     // Wait for the previous frame's copy or blit to finish reading before writing.
-    // Every pixel is rewritten, so the old contents are discarded (UNDEFINED).
-    transitionImage(commands, output.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+    // Every pixel is rewritten, so the old contents are discarded (UNDEFINED). The
+    // barrier also orders the writes of later submissions of this frame: its scope is
+    // everything after it in submission order.
+    transitionImage(commands, renderer.outputImage.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
                     VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                     VK_ACCESS_SHADER_WRITE_BIT);
+}
+
+void recordTraceRegion(const Renderer& renderer, VkCommandBuffer commands, const TraceRegion& region) {
     if (renderer.timestampPool) {
         vkCmdResetQueryPool(commands, renderer.timestampPool, 0, 2);
         vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, renderer.timestampPool, 0);
@@ -112,23 +145,35 @@ void recordTrace(const Renderer& renderer, VkCommandBuffer commands) {
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline.pipeline);
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline.layout, 0, 1,
                             &renderer.descriptorSet, 0, nullptr);
-    for (std::uint32_t tileY = 0; tileY < output.height; tileY += kTileSize) {
-        for (std::uint32_t tileX = 0; tileX < output.width; tileX += kTileSize) {
+    // Regions write disjoint pixels, so the dispatches need no barrier between them.
+    const std::uint32_t right = region.x + region.width, bottom = region.y + region.height;
+    for (std::uint32_t tileY = region.y; tileY < bottom; tileY += kTileSize) {
+        for (std::uint32_t tileX = region.x; tileX < right; tileX += kTileSize) {
             gpu::GpuFrameParams params = frameParams(renderer, tileX, tileY);
             vkCmdPushConstants(commands, renderer.pipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0,
                                sizeof(params), &params);
-            std::uint32_t tileWidth = std::min(kTileSize, output.width - tileX);
-            std::uint32_t tileHeight = std::min(kTileSize, output.height - tileY);
+            std::uint32_t tileWidth = std::min(kTileSize, right - tileX);
+            std::uint32_t tileHeight = std::min(kTileSize, bottom - tileY);
             vkCmdDispatch(commands, (tileWidth + WORKGROUP_SIZE_X - 1) / WORKGROUP_SIZE_X,
                           (tileHeight + WORKGROUP_SIZE_Y - 1) / WORKGROUP_SIZE_Y, 1);
         }
     }
     if (renderer.timestampPool)
         vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, renderer.timestampPool, 1);
-    // Make the kernel's writes visible to the copy or blit that follows.
-    transitionImage(commands, output.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-                    VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+}
+
+void recordTraceEnd(const Renderer& renderer, VkCommandBuffer commands) {
+    // Make the kernel's writes, from this and earlier submissions, visible to the copy
+    // or blit that follows.
+    transitionImage(commands, renderer.outputImage.image, VK_IMAGE_LAYOUT_GENERAL,
+                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                    VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+}
+
+void recordTrace(const Renderer& renderer, VkCommandBuffer commands) {
+    recordTraceBegin(renderer, commands);
+    recordTraceRegion(renderer, commands, {0, 0, renderer.outputImage.width, renderer.outputImage.height});
+    recordTraceEnd(renderer, commands);
 }
 
 double lastTraceGpuMilliseconds(const Renderer& renderer, const Context& context) {

@@ -7,10 +7,12 @@
 #include "resources.h"
 #include "scene.h"
 #include "scene_gpu.h"
+#include "tile_scheduler.h"
 
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <filesystem>
 
 struct RenderSettings {
     std::uint32_t width = 640;
@@ -19,6 +21,8 @@ struct RenderSettings {
     std::uint32_t depth = 5;
     glm::vec3 background{1.0f};
     double fovDegrees = 60.0;
+    Acceleration acceleration = Acceleration::Auto; // --accel: hierarchy or every primitive
+    std::filesystem::path cacheDirectory; // shader and pipeline cache; empty: none (--no-cache)
 };
 
 struct Renderer {
@@ -40,11 +44,19 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
 // Recreates the output image at a new size (the window was resized).
 void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t width, std::uint32_t height);
 
-// Records the whole frame's trace. Afterwards the output image is ready to be read
-// by a transfer command (copy or blit) in VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL.
+// Records the whole frame's trace in one command buffer (the window). Afterwards the
+// output image is ready to be read by a transfer command (copy or blit) in
+// VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL.
 void recordTrace(const Renderer& renderer, VkCommandBuffer commands);
 
-// The GPU time of the last finished trace from the timestamp queries, or a
+// The same frame spread over several submissions (headless): recordTraceBegin in the
+// first command buffer, recordTraceRegion for each region, recordTraceEnd in the last.
+// The regions must cover the image; each pixel's value does not depend on them.
+void recordTraceBegin(const Renderer& renderer, VkCommandBuffer commands);
+void recordTraceRegion(const Renderer& renderer, VkCommandBuffer commands, const TraceRegion& region);
+void recordTraceEnd(const Renderer& renderer, VkCommandBuffer commands);
+
+// The GPU time of the last finished recordTraceRegion from the timestamp queries, or a
 // negative value when the device has no timestamps.
 double lastTraceGpuMilliseconds(const Renderer& renderer, const Context& context);
 

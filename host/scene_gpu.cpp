@@ -1,5 +1,8 @@
 #include "scene_gpu.h"
 
+#include <algorithm>
+#include <bit>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -8,6 +11,8 @@
 // The C++ mirror must have exactly the std430 layout the shader reads.
 static_assert(sizeof(gpu::GpuMaterial) == 32);
 static_assert(sizeof(gpu::GpuLight) == 32);
+static_assert(sizeof(gpu::GpuBvhNode) == 32);
+static_assert(offsetof(gpu::GpuBvhNode, boundsMaxAndCount) == 16);
 static_assert(sizeof(gpu::GpuFrameParams) == 96);
 static_assert(sizeof(gpu::GpuFrameParams) <= 128, "push constants are limited to 128 bytes");
 static_assert(offsetof(gpu::GpuFrameParams, image) == 48);
@@ -83,15 +88,76 @@ PackedScene packScene(const Scene& scene) {
             packed.triangleVertices.push_back(vertexIndices.indexOf(packedVertex));
         }
     }
+    // 28 bytes a vertex: the material index rides in the position's unused w, and the
+    // normal takes three floats rather than a padded vec4.
     for (const PackedVertex& vertex : vertices) {
-        packed.vertexPositions.push_back(vertex.position);
-        packed.vertexNormals.push_back(vertex.normal);
-        packed.vertexMaterials.push_back(vertex.material);
+        packed.vertexPositions.push_back(glm::vec4(glm::vec3(vertex.position), std::bit_cast<float>(vertex.material)));
+        packed.vertexNormals.insert(packed.vertexNormals.end(), {vertex.normal.x, vertex.normal.y, vertex.normal.z});
     }
 
     for (const Light& light : scene.lights)
         packed.lights.push_back({toVec4(light.position), toVec4(light.color)});
     return packed;
+}
+
+// Primitive boxes. A triangle's box is the exact min and max of its float corners, so its
+// edges lie in the box's closed faces and the robust slab test (shaders/bvh.glsl) admits
+// every ray that the watertight triangle test admits through an edge or a vertex. A
+// sphere's box is centre -+ radius rounded to float, which can cut into the sphere by
+// half an ulp, and the sphere test itself rounds; it is enlarged by 2^-20 of its largest
+// coordinate magnitude (about 8 ulps) so that a ray the sphere test reports as grazing it
+// also enters its box, and the hierarchy finds exactly the hits that testing every
+// primitive finds.
+namespace {
+
+constexpr double kSphereBoxMargin = 1.0 / 1048576.0;
+
+void appendBox(std::vector<float>& boxes, glm::vec3 lo, glm::vec3 hi) {
+    boxes.insert(boxes.end(), {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z});
+}
+
+} // namespace
+
+std::uint32_t vertexMaterial(const PackedScene& packed, std::size_t v) {
+    return std::bit_cast<std::uint32_t>(packed.vertexPositions.at(v).w);
+}
+
+PrimitiveBounds primitiveBounds(const PackedScene& packed) {
+    PrimitiveBounds bounds;
+    bounds.sphereCount = std::uint32_t(packed.spheres.size());
+    bounds.boxes.reserve(6 * (packed.spheres.size() + packed.triangleVertices.size() / 3));
+    for (const glm::vec4& sphere : packed.spheres) {
+        glm::dvec3 center(sphere);
+        double magnitude = std::max({std::abs(center.x), std::abs(center.y), std::abs(center.z)}) + sphere.w;
+        double reach = double(sphere.w) + kSphereBoxMargin * magnitude;
+        appendBox(bounds.boxes, glm::vec3(center - reach), glm::vec3(center + reach));
+    }
+    for (std::size_t i = 0; i + 2 < packed.triangleVertices.size(); i += 3) {
+        glm::vec3 a(packed.vertexPositions[packed.triangleVertices[i]]);
+        glm::vec3 b(packed.vertexPositions[packed.triangleVertices[i + 1]]);
+        glm::vec3 c(packed.vertexPositions[packed.triangleVertices[i + 2]]);
+        appendBox(bounds.boxes, glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c)));
+    }
+    return bounds;
+}
+
+void applyLeafOrder(PackedScene& packed, const Bvh& bvh) {
+    if (bvh.sphereOrder.size() != packed.spheres.size() ||
+        bvh.triangleOrder.size() * 3 != packed.triangleVertices.size())
+        throw std::logic_error("applyLeafOrder: the hierarchy was built for another scene");
+    std::vector<glm::vec4> spheres(packed.spheres.size());
+    std::vector<std::uint32_t> sphereMaterials(packed.spheres.size());
+    for (std::size_t slot = 0; slot < spheres.size(); ++slot) {
+        spheres[slot] = packed.spheres[bvh.sphereOrder[slot]];
+        sphereMaterials[slot] = packed.sphereMaterials[bvh.sphereOrder[slot]];
+    }
+    std::vector<std::uint32_t> triangleVertices(packed.triangleVertices.size());
+    for (std::size_t slot = 0; slot < bvh.triangleOrder.size(); ++slot)
+        for (std::size_t k = 0; k < 3; ++k)
+            triangleVertices[3 * slot + k] = packed.triangleVertices[3 * std::size_t(bvh.triangleOrder[slot]) + k];
+    packed.spheres = std::move(spheres);
+    packed.sphereMaterials = std::move(sphereMaterials);
+    packed.triangleVertices = std::move(triangleVertices);
 }
 
 namespace {
@@ -120,9 +186,9 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed) {
         view(BINDING_TRIANGLES, "triangles", packed.triangleVertices),
         view(BINDING_VERTEX_POSITIONS, "vertex positions", packed.vertexPositions),
         view(BINDING_VERTEX_NORMALS, "vertex normals", packed.vertexNormals),
-        view(BINDING_VERTEX_MATERIALS, "vertex materials", packed.vertexMaterials),
         view(BINDING_MATERIALS, "materials", packed.materials),
         view(BINDING_LIGHTS, "lights", packed.lights),
+        view(BINDING_BVH_NODES, "hierarchy nodes", packed.bvhNodes),
     };
     const VkDeviceSize alignment =
         std::max<VkDeviceSize>(16, context.properties.limits.minStorageBufferOffsetAlignment);
@@ -154,6 +220,7 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed) {
     scene.sphereCount = static_cast<std::uint32_t>(packed.spheres.size());
     scene.triangleCount = static_cast<std::uint32_t>(packed.triangleVertices.size() / 3);
     scene.lightCount = static_cast<std::uint32_t>(packed.lights.size());
+    scene.bvhNodeCount = static_cast<std::uint32_t>(packed.bvhNodes.size());
     scene.ambient = packed.ambient;
     return scene;
 }

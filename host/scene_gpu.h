@@ -3,6 +3,7 @@
 // are stored once, and a sphere pays for no triangle fields.
 #pragma once
 
+#include "bvh.h"
 #include "resources.h"
 #include "scene.h"
 #include "shared.h"
@@ -15,15 +16,26 @@ struct PackedScene {
     std::vector<glm::vec4> spheres;               // centre xyz, radius w
     std::vector<std::uint32_t> sphereMaterials;   // index into materials
     std::vector<std::uint32_t> triangleVertices;  // 3 vertex indices per triangle
-    std::vector<glm::vec4> vertexPositions;       // xyz, w = 0
-    std::vector<glm::vec4> vertexNormals;         // xyz as given, w = 0
-    std::vector<std::uint32_t> vertexMaterials;   // index into materials
+    std::vector<glm::vec4> vertexPositions;       // xyz; w: index into materials (uint bits)
+    std::vector<float> vertexNormals;             // 3 per vertex: xyz as given
     std::vector<gpu::GpuMaterial> materials;      // each distinct material once
     std::vector<gpu::GpuLight> lights;
+    std::vector<gpu::GpuBvhNode> bvhNodes;        // empty: the shader tests every primitive
     glm::vec4 ambient{0.0f};
 };
 
+// Spheres and triangles in file order, materials and vertices shared; no hierarchy.
 PackedScene packScene(const Scene& scene);
+
+// The material index of vertex v, from its position's w.
+std::uint32_t vertexMaterial(const PackedScene& packed, std::size_t v);
+
+// The box of every sphere, then of every triangle, slightly enlarged (see scene_gpu.cpp).
+PrimitiveBounds primitiveBounds(const PackedScene& packed);
+
+// Stores the spheres (with their materials) and triangles in the hierarchy's leaf order,
+// so that each leaf's primitives are consecutive. Vertices and materials are untouched.
+void applyLeafOrder(PackedScene& packed, const Bvh& bvh);
 
 // All scene arrays live in one device buffer; each binding sees its own range.
 struct GpuScene {
@@ -33,6 +45,7 @@ struct GpuScene {
     std::uint32_t sphereCount = 0;
     std::uint32_t triangleCount = 0;
     std::uint32_t lightCount = 0;
+    std::uint32_t bvhNodeCount = 0; // 0: no hierarchy
     glm::vec4 ambient{0.0f};
 };
 

@@ -3,6 +3,7 @@
 // and an idle window sleeps in glfwWaitEvents.
 #include "window.h"
 
+#include "pipeline_cache.h"
 #include "renderer.h"
 #include "swapchain.h"
 #include "vk_check.h"
@@ -86,7 +87,9 @@ void open(Viewer& viewer, const Options& options, const Scene& scene) {
     // The output starts at the requested size; the first swapchain adjusts it to the
     // framebuffer's size, should the window system have chosen another.
     RenderSettings settings{options.width, options.height, options.samplesPerPixel, options.depth,
-                            glm::vec3(options.background), options.fovDegrees};
+                            glm::vec3(options.background), options.fovDegrees,
+                            options.acceleration};
+    settings.cacheDirectory = userCacheDirectory(options.useCache);
     createRenderer(viewer.renderer, viewer.context, scene, settings);
 
     VkDevice device = viewer.context.device;

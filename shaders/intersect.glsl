@@ -1,4 +1,5 @@
-// Ray/primitive intersection and the loops over the whole scene (closest hit, any hit).
+// Ray/primitive intersection, and the loops that test every primitive (closest hit, any
+// hit): the path for scenes too small for a hierarchy to pay (see bvh.glsl).
 // Both primitive kinds are two-sided; a hit needs tMin < t < tMax with tMin = 0.
 // Needs: Ray (camera.glsl), the scene buffers and params (trace.comp).
 
@@ -103,8 +104,9 @@ void triangleCorners(uint i, out vec3 a, out vec3 b, out vec3 c) {
     c = vertexPositions[triangleVertices[3u * i + 2u]].xyz;
 }
 
-// The nearest hit along the ray over every sphere and triangle (brute-force loop).
-Hit closestHit(Ray ray) {
+// The nearest hit along the ray over every sphere and triangle (brute-force loop). Of equal
+// distances the first tested is kept: spheres first, then by index.
+Hit closestHitEveryPrimitive(Ray ray) {
     Hit hit = Hit(FLOAT_MAX, HIT_NONE, 0u, vec3(0.0));
     float t;
     for (uint i = 0u; i < params.counts.x; ++i) {
@@ -121,8 +123,8 @@ Hit closestHit(Ray ray) {
     return hit;
 }
 
-// Whether anything lies on the ray with 0 < t < tMax (shadow rays); stops at the first hit.
-bool anyHit(Ray ray, float tMax) {
+// Whether anything lies on the ray with 0 < t < tMax, testing every primitive.
+bool anyHitEveryPrimitive(Ray ray, float tMax) {
     float t;
     for (uint i = 0u; i < params.counts.x; ++i) {
         if (intersectSphere(ray, spheres[i], tMax, t)) return true;

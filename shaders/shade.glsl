@@ -1,5 +1,5 @@
 // Surface data at a hit and Phong shading with hard shadows, as the SPEC defines them.
-// Needs: Ray, Hit, anyHit (camera.glsl, intersect.glsl), offsetRayOrigin (ray_offset.glsl).
+// Needs: Ray, Hit (camera.glsl, intersect.glsl), anyHit (bvh.glsl), offsetRayOrigin (ray_offset.glsl).
 
 // Everything shading needs about a hit point.
 struct SurfacePoint {
@@ -18,6 +18,14 @@ vec3 normalizeOr(vec3 v, vec3 fallback) {
     float m = max(abs(v.x), max(abs(v.y), abs(v.z)));
     return m > 0.0 ? normalize(v / m) : fallback;
 }
+
+// The normal of vertex v as given (three packed floats).
+vec3 vertexNormal(uint v) {
+    return vec3(vertexNormals[3u * v], vertexNormals[3u * v + 1u], vertexNormals[3u * v + 2u]);
+}
+
+// The material of vertex v (its index rides in the position's w).
+GpuMaterial vertexMaterial(uint v) { return materials[floatBitsToUint(vertexPositions[v].w)]; }
 
 // Position, normals and material at a hit. Sphere: N = (P - C) / r, with P projected back
 // onto the sphere; triangle: P, the vertex normals and the materials interpolated with
@@ -45,12 +53,11 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
         s.position = w.x * a + w.y * b + w.z * c;
         s.magnitude = w.x * abs(a) + w.y * abs(b) + w.z * abs(c);
         s.geometricNormal = normalizeOr(cross(b - a, c - a), -ray.direction);
-        vec3 n = w.x * vertexNormals[v.x].xyz + w.y * vertexNormals[v.y].xyz +
-                 w.z * vertexNormals[v.z].xyz;
+        vec3 n = w.x * vertexNormal(v.x) + w.y * vertexNormal(v.y) + w.z * vertexNormal(v.z);
         s.normal = normalizeOr(n, s.geometricNormal);
-        GpuMaterial ma = materials[vertexMaterials[v.x]];
-        GpuMaterial mb = materials[vertexMaterials[v.y]];
-        GpuMaterial mc = materials[vertexMaterials[v.z]];
+        GpuMaterial ma = vertexMaterial(v.x);
+        GpuMaterial mb = vertexMaterial(v.y);
+        GpuMaterial mc = vertexMaterial(v.z);
         vec4 kdShininess = w.x * ma.diffuseShininess + w.y * mb.diffuseShininess +
                            w.z * mc.diffuseShininess;
         s.kd = kdShininess.xyz;

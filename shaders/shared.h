@@ -34,12 +34,21 @@ using uint = std::uint32_t;
 #define BINDING_SPHERES 1          // vec4 per sphere: centre xyz, radius w
 #define BINDING_SPHERE_MATERIALS 2 // uint per sphere: index into materials
 #define BINDING_TRIANGLES 3        // 3 uint per triangle: indices into the vertex arrays
-#define BINDING_VERTEX_POSITIONS 4 // vec4 per vertex: position xyz, w unused
-#define BINDING_VERTEX_NORMALS 5   // vec4 per vertex: normal xyz as given, w unused
-#define BINDING_VERTEX_MATERIALS 6 // uint per vertex: index into materials
-#define BINDING_MATERIALS 7        // GpuMaterial per distinct material
-#define BINDING_LIGHTS 8           // GpuLight per light
+#define BINDING_VERTEX_POSITIONS 4 // vec4 per vertex: position xyz, w: its material index (uint bits)
+#define BINDING_VERTEX_NORMALS 5   // 3 floats per vertex: normal xyz as given, tightly packed
+#define BINDING_MATERIALS 6        // GpuMaterial per distinct material
+#define BINDING_LIGHTS 7           // GpuLight per light
+#define BINDING_BVH_NODES 8        // GpuBvhNode per hierarchy node, depth first (host/bvh.h)
 #define BINDING_COUNT 9
+
+// The bounding volume hierarchy (host/bvh.cpp builds it, shaders/bvh.glsl walks it).
+// Traversal keeps the far child of each interior node on a fixed stack of this many
+// entries, at most one per level, so the builder keeps every leaf within this depth.
+#define BVH_STACK_SIZE 32
+// A leaf's boundsMaxAndCount.w: its primitive count, and this bit when they are spheres
+// (every leaf holds one kind). 0 marks an interior node.
+#define BVH_LEAF_SPHERES 0x80000000u
+#define BVH_COUNT_MASK 0x7fffffffu
 
 // A material, shared by every sphere and vertex that uses it. 32 bytes.
 struct GpuMaterial {
@@ -53,13 +62,25 @@ struct GpuLight {
     vec4 color;    // rgb, w unused
 };
 
+// A hierarchy node. 32 bytes, two to a 64-byte cache line. The uint in each .w is stored
+// with its bit pattern (std::bit_cast on the host, floatBitsToUint in GLSL).
+// Interior node: its left child is the next node in the array (depth-first order); .w of
+// boundsMinAndIndex is the index of the right child, .w of boundsMaxAndCount is 0.
+// Leaf: .w of boundsMinAndIndex is the first of its primitives, which are consecutive in
+// the sphere or triangle arrays (the packer stores them in leaf order); .w of
+// boundsMaxAndCount is their count, with BVH_LEAF_SPHERES set for spheres.
+struct GpuBvhNode {
+    vec4 boundsMinAndIndex; // box min xyz; right child (interior) or first primitive (leaf)
+    vec4 boundsMaxAndCount; // box max xyz; 0 (interior) or count | kind bit (leaf)
+};
+
 // Per-dispatch parameters, passed as push constants (at most 128 bytes).
 struct GpuFrameParams {
     vec4 background; // rgb colour of rays that hit nothing, w unused
     vec4 ambient;    // rgb ambient light added once per shading point, w unused
     vec4 camera;     // x: aspect * tan(fov/2), y: tan(fov/2), zw unused
     uvec4 image;     // x: width, y: height, z: samples per pixel, w: reflection depth
-    uvec4 counts;    // x: spheres, y: triangles, z: lights, w unused
+    uvec4 counts;    // x: spheres, y: triangles, z: lights, w: hierarchy nodes (0: test every primitive)
     uvec4 tile;      // xy: first pixel of this dispatch, zw unused
 };
 

@@ -25,20 +25,22 @@ layout(set = 0, binding = BINDING_SPHERES, std430) readonly buffer SphereBuffer 
 layout(set = 0, binding = BINDING_SPHERE_MATERIALS, std430) readonly buffer SphereMaterialBuffer { uint sphereMaterials[]; };
 // Per triangle, three consecutive indices into the vertex arrays.
 layout(set = 0, binding = BINDING_TRIANGLES, std430) readonly buffer TriangleBuffer { uint triangleVertices[]; };
-// Per vertex, its position in xyz.
+// Per vertex, its position in xyz and the index of its material in materials[] in w's bits.
 layout(set = 0, binding = BINDING_VERTEX_POSITIONS, std430) readonly buffer PositionBuffer { vec4 vertexPositions[]; };
-// Per vertex, its normal in xyz as the scene file gives it (maybe unnormalised or zero).
-layout(set = 0, binding = BINDING_VERTEX_NORMALS, std430) readonly buffer NormalBuffer { vec4 vertexNormals[]; };
-// Per vertex, the index of its material in materials[].
-layout(set = 0, binding = BINDING_VERTEX_MATERIALS, std430) readonly buffer VertexMaterialBuffer { uint vertexMaterials[]; };
+// Per vertex, its normal as the scene file gives it (maybe unnormalised or zero): three
+// floats, no padding (a vec4 would waste a quarter; see vertexNormal in shade.glsl).
+layout(set = 0, binding = BINDING_VERTEX_NORMALS, std430) readonly buffer NormalBuffer { float vertexNormals[]; };
 // The distinct materials of the scene.
 layout(set = 0, binding = BINDING_MATERIALS, std430) readonly buffer MaterialBuffer { GpuMaterial materials[]; };
 // The point lights.
 layout(set = 0, binding = BINDING_LIGHTS, std430) readonly buffer LightBuffer { GpuLight lights[]; };
+// The hierarchy over spheres and triangles, depth first (params.counts.w nodes; 0: none).
+layout(set = 0, binding = BINDING_BVH_NODES, std430) readonly buffer BvhNodeBuffer { GpuBvhNode bvhNodes[]; };
 
 #include "camera.glsl"
 #include "ray_offset.glsl"
 #include "intersect.glsl"
+#include "bvh.glsl"
 #include "shade.glsl"
 
 // Colour seen along a primary ray: the SPEC's recursion

@@ -143,7 +143,8 @@ TEST(CommandLine, BenchPrintsOneJsonLineWithEveryKey) {
     std::string json = run.out.substr(run.out.rfind('{'));
     for (const char* key : {"\"scene\"", "\"width\": 64", "\"height\": 48", "\"spp\": 1", "\"depth\": 5",
                             "\"frames\": 3", "\"device\": \"llvmpipe", "\"wall_ms_median\"",
-                            "\"wall_ms_min\"", "\"gpu_ms_median\"", "\"startup_ms\"", "\"gpu_bytes\""})
+                            "\"wall_ms_min\"", "\"gpu_ms_median\"", "\"startup_ms\"", "\"gpu_bytes\"",
+                            "\"parse_ms\"", "\"submissions\""})
         EXPECT_NE(json.find(key), std::string::npos) << key << " missing from " << json;
     EXPECT_EQ(json.find("null"), std::string::npos) << "lavapipe has timestamps: " << json;
 }

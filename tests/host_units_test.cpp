@@ -81,7 +81,11 @@ TEST(ScenePacking, SharesIdenticalMaterialsAndVertices) {
     EXPECT_EQ(packed.sphereMaterials, (std::vector<std::uint32_t>{0, 0}));
     EXPECT_EQ(packed.vertexPositions.size(), 4u);
     EXPECT_EQ(packed.triangleVertices, (std::vector<std::uint32_t>{0, 1, 2, 1, 3, 2}));
-    EXPECT_EQ(packed.vertexMaterials, (std::vector<std::uint32_t>{1, 1, 1, 0}));
+    ASSERT_EQ(packed.vertexNormals.size(), 3 * 4u); // three floats per vertex
+    std::vector<std::uint32_t> vertexMaterials;
+    for (std::size_t v = 0; v < packed.vertexPositions.size(); ++v) vertexMaterials.push_back(vertexMaterial(packed, v));
+    EXPECT_EQ(vertexMaterials, (std::vector<std::uint32_t>{1, 1, 1, 0}));
+    EXPECT_EQ(glm::vec3(packed.vertexPositions[3]), glm::vec3(1, 1, -5));
     EXPECT_EQ(packed.spheres[1], glm::vec4(2, 0, -3, 0.5f));
     EXPECT_EQ(packed.materials[0].diffuseShininess, glm::vec4(0.9f, 0.2f, 0.3f, 10.0f));
     EXPECT_EQ(packed.lights.size(), 1u);

@@ -1,5 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the project needs, only those that are missing.
+#   tools/install_deps.sh           what building, running and testing need
+#   tools/install_deps.sh --bench   that, plus what tools/bench adds (make bench): Embree
+#                                   for the embree_peer CPU peer, matplotlib for the chart
 set -euo pipefail
 
 packages=(
@@ -10,6 +13,14 @@ packages=(
     googletest libgtest-dev
     xvfb xauth x11-utils x11-apps xdotool
 )
+# Optional: the benchmark only. Raytracer and the tests never need them.
+bench_packages=(libembree-dev python3-matplotlib)
+
+case "${1:-}" in
+    "") ;;
+    --bench) packages+=("${bench_packages[@]}") ;;
+    *) echo "usage: $0 [--bench]" >&2; exit 2 ;;
+esac
 
 missing=()
 for package in "${packages[@]}"; do

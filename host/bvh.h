@@ -1,0 +1,56 @@
+// Bounding volume hierarchy over spheres and triangles together, built on the host with
+// a binned surface-area heuristic and flattened into the GpuBvhNode array of shared.h.
+// Knows nothing of Vulkan or of the scene file: it sees one box per primitive.
+#pragma once
+
+#include "shared.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+// One axis-aligned box per primitive: the input of the builder.
+struct PrimitiveBounds {
+    std::vector<float> boxes;      // 6 floats per primitive: min x y z, max x y z
+    std::uint32_t sphereCount = 0; // primitives [0, sphereCount) are spheres, the rest triangles
+    std::size_t size() const { return boxes.size() / 6; }
+};
+
+// Whether the shader walks a hierarchy or tests every primitive (--accel).
+enum class Acceleration { Auto, Bvh, None };
+
+// Auto uses the hierarchy from this many primitives (spheres + triangles) up; below it,
+// testing everything is as fast on lavapipe (measured: see the README's Speed section).
+constexpr std::size_t kBvhAutoThreshold = 16;
+
+inline bool useHierarchy(Acceleration acceleration, std::size_t primitives) {
+    if (acceleration == Acceleration::Auto) return primitives >= kBvhAutoThreshold;
+    return acceleration == Acceleration::Bvh && primitives > 0;
+}
+
+struct BvhSettings {
+    std::uint32_t maxLeafSize = 4; // a range at most this big may become a leaf
+    std::uint32_t maxDepth = BVH_STACK_SIZE; // no leaf deeper (root at depth 0)
+    float traversalCost = 1.0f;    // cost of visiting a node, in primitive tests (SAH)
+    std::uint32_t threads = 2;     // threads for the top-level subtrees
+};
+
+struct Bvh {
+    std::vector<gpu::GpuBvhNode> nodes; // depth first; node 0 is the root
+    // Leaf order: slot k of the packed sphere (triangle) array holds the sphere (triangle)
+    // that was number sphereOrder[k] (triangleOrder[k]) in the input. Leaves index slots.
+    std::vector<std::uint32_t> sphereOrder;
+    std::vector<std::uint32_t> triangleOrder;
+    std::uint32_t depth = 0; // of the deepest leaf
+};
+
+// Builds the hierarchy. Every primitive ends in exactly one leaf; every leaf holds one
+// kind and its slots are consecutive. An empty input gives an empty hierarchy.
+Bvh buildBvh(const PrimitiveBounds& bounds, const BvhSettings& settings = {});
+
+// The fields of a node as the shader reads them.
+bool isLeaf(const gpu::GpuBvhNode& node);
+std::uint32_t rightChild(const gpu::GpuBvhNode& node); // interior nodes
+std::uint32_t firstPrimitive(const gpu::GpuBvhNode& node); // leaves
+std::uint32_t primitiveCount(const gpu::GpuBvhNode& node); // leaves
+bool holdsSpheres(const gpu::GpuBvhNode& node);            // leaves

@@ -1,0 +1,158 @@
+// Walking the bounding volume hierarchy (host/bvh.cpp builds it; node layout in shared.h),
+// and the two scene queries shading uses, which walk it or test every primitive.
+// Needs: Ray (camera.glsl), the primitive tests and brute-force loops (intersect.glsl),
+// the node buffer and params (trace.comp).
+
+// A ray prepared for the slab test: 1/d per axis (+-inf where d is +-0), and for each of
+// the box's two planes per axis the t to use when the origin lies exactly in that plane.
+struct BoxRay {
+    vec3 origin;
+    vec3 invDirection;
+    vec3 inLoPlane; // -FLOAT_MAX where the min plane is the near one, +FLOAT_MAX where far
+    vec3 inHiPlane; // the opposite
+};
+
+BoxRay boxRay(Ray ray) {
+    vec3 inv = 1.0 / ray.direction;
+    bvec3 negative = lessThan(inv, vec3(0.0)); // -0 gives -inf: negative too
+    return BoxRay(ray.origin, inv, mix(vec3(-FLOAT_MAX), vec3(FLOAT_MAX), negative),
+                  mix(vec3(FLOAT_MAX), vec3(-FLOAT_MAX), negative));
+}
+
+// 1 + 2 gamma(3), gamma(n) = n eps / (1 - n eps), eps = 2^-24: the relative error bound
+// of the slab distances (plane - o) * (1/d), three roundings each, applied to the exit
+// distance (Ize 2013; Pharr, Jakob & Humphreys, pbrt-v3 section 3.9.2).
+const float SLAB_EXIT_SCALE = 1.0000003576;
+
+// Robust ray/box slab test of Ize, "Robust BVH Ray Traversal", JCGT 2(2), 2013: the entry
+// and exit distances are computed as (plane - origin) * (1/d) with correct rounding and the
+// exit distance is scaled by 1 + 2 gamma(3), so that a box the exact ray touches is never
+// missed, at its faces, edges and corners included (a closed box). A zero direction
+// component gives 1/d = +-inf, which puts the slab at -inf/+inf (origin inside) or misses
+// (origin outside); only an origin exactly in the plane would make 0 * inf = NaN, and
+// lavapipe's min/max then drop the NaN and can make the box look missed. That case is
+// taken out before min/max: the ray then runs in the face's plane, which the closed box
+// includes, so that plane limits nothing. No NaN reaches min/max. Returns whether the
+// box is entered at some t in [0, tLimit] (scaled alike), and the entry t.
+bool hitBox(BoxRay ray, vec3 lo, vec3 hi, float tLimit, out float tEntry) {
+    precise vec3 toLo = lo - ray.origin;
+    precise vec3 toHi = hi - ray.origin;
+    precise vec3 tLo = toLo * ray.invDirection;
+    precise vec3 tHi = toHi * ray.invDirection;
+    tLo = mix(tLo, ray.inLoPlane, equal(toLo, vec3(0.0)));
+    tHi = mix(tHi, ray.inHiPlane, equal(toHi, vec3(0.0)));
+    vec3 tNear = min(tLo, tHi);
+    vec3 tFar = max(tLo, tHi);
+    tEntry = max(max(tNear.x, tNear.y), max(tNear.z, 0.0));
+    float tExit = min(min(tFar.x, tFar.y), min(tFar.z, tLimit));
+    return tEntry <= tExit * SLAB_EXIT_SCALE;
+}
+
+// The node's two halves as the shader uses them.
+uint nodeIndexField(GpuBvhNode node) { return floatBitsToUint(node.boundsMinAndIndex.w); }
+uint nodeCountField(GpuBvhNode node) { return floatBitsToUint(node.boundsMaxAndCount.w); }
+
+// The next float above a positive t (t itself for +inf): a limit that lets a primitive at
+// exactly t through, for the tie rule below.
+float nextFloatUp(float t) { return uintBitsToFloat(floatBitsToUint(t) + 1u); }
+
+// The primitives of one leaf against the ray. Closest hit: equal distances go to the
+// lower (kind, index), spheres first, which is what the brute-force loops give (they take
+// primitives in that order and keep the first of equals), so both paths agree exactly.
+// Returns true in any-hit mode when something was hit.
+bool intersectLeaf(Ray ray, ShearedRay sheared, GpuBvhNode leaf, bool anyHitMode, inout Hit hit) {
+    uint first = nodeIndexField(leaf);
+    uint count = nodeCountField(leaf);
+    uint end = first + (count & BVH_COUNT_MASK);
+    float limit = anyHitMode ? hit.t : nextFloatUp(hit.t);
+    float t;
+    if ((count & BVH_LEAF_SPHERES) != 0u) {
+        for (uint i = first; i < end; ++i) {
+            if (!intersectSphere(ray, spheres[i], limit, t)) continue;
+            if (anyHitMode) return true;
+            if (t < hit.t || hit.kind == HIT_TRIANGLE || (hit.kind == HIT_SPHERE && i < hit.index)) {
+                hit = Hit(t, HIT_SPHERE, i, vec3(0.0));
+                limit = nextFloatUp(t);
+            }
+        }
+    } else {
+        vec3 a, b, c, barycentric;
+        for (uint i = first; i < end; ++i) {
+            triangleCorners(i, a, b, c);
+            if (!intersectTriangle(sheared, a, b, c, limit, t, barycentric)) continue;
+            if (anyHitMode) return true;
+            if (t < hit.t || (hit.kind == HIT_TRIANGLE && i < hit.index)) {
+                hit = Hit(t, HIT_TRIANGLE, i, barycentric);
+                limit = nextFloatUp(t);
+            }
+        }
+    }
+    return false;
+}
+
+// Iterative depth-first traversal with a fixed stack (the builder keeps the depth within
+// BVH_STACK_SIZE). At an interior node both children's boxes are tested; the nearer hit
+// child is visited next and the other pushed with its entry distance, and a popped node
+// whose entry lies beyond the closest hit so far is skipped. Any-hit mode (shadow rays)
+// returns at the first hit found. hit.t is the limit on entry (the light's distance for
+// shadow rays, FLOAT_MAX for closest hit); returns whether any-hit mode found something.
+bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
+    ShearedRay sheared = shearRay(ray);
+    BoxRay slabRay = boxRay(ray);
+    uint stackNode[BVH_STACK_SIZE];
+    float stackEntry[BVH_STACK_SIZE];
+    uint stackSize = 0u;
+    uint index = 0u;
+    GpuBvhNode node = bvhNodes[0];
+    for (;;) {
+        if (nodeCountField(node) != 0u) {
+            if (intersectLeaf(ray, sheared, node, anyHitMode, hit)) return true;
+        } else {
+            uint leftIndex = index + 1u;
+            uint rightIndex = nodeIndexField(node);
+            GpuBvhNode left = bvhNodes[leftIndex];
+            GpuBvhNode right = bvhNodes[rightIndex];
+            float leftEntry, rightEntry;
+            bool hitLeft = hitBox(slabRay, left.boundsMinAndIndex.xyz, left.boundsMaxAndCount.xyz, hit.t, leftEntry);
+            bool hitRight = hitBox(slabRay, right.boundsMinAndIndex.xyz, right.boundsMaxAndCount.xyz, hit.t, rightEntry);
+            if (hitLeft && hitRight) {
+                bool rightFirst = rightEntry < leftEntry;
+                stackNode[stackSize] = rightFirst ? leftIndex : rightIndex;
+                stackEntry[stackSize] = rightFirst ? leftEntry : rightEntry;
+                ++stackSize;
+                index = rightFirst ? rightIndex : leftIndex;
+                node = rightFirst ? right : left;
+                continue;
+            }
+            if (hitLeft || hitRight) {
+                index = hitLeft ? leftIndex : rightIndex;
+                node = hitLeft ? left : right;
+                continue;
+            }
+        }
+        // Pop the nearest pending node that can still hold something nearer than the hit.
+        bool found = false;
+        while (stackSize > 0u && !found) {
+            --stackSize;
+            found = stackEntry[stackSize] <= hit.t * SLAB_EXIT_SCALE;
+        }
+        if (!found) return false;
+        index = stackNode[stackSize];
+        node = bvhNodes[index];
+    }
+}
+
+// The nearest hit along the ray over every sphere and triangle.
+Hit closestHit(Ray ray) {
+    if (params.counts.w == 0u) return closestHitEveryPrimitive(ray);
+    Hit hit = Hit(FLOAT_MAX, HIT_NONE, 0u, vec3(0.0));
+    traverseBvh(ray, false, hit);
+    return hit;
+}
+
+// Whether anything lies on the ray with 0 < t < tMax (shadow rays); stops at the first hit.
+bool anyHit(Ray ray, float tMax) {
+    if (params.counts.w == 0u) return anyHitEveryPrimitive(ray, tMax);
+    Hit hit = Hit(tMax, HIT_NONE, 0u, vec3(0.0));
+    return traverseBvh(ray, true, hit);
+}

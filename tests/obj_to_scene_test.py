@@ -1,0 +1,184 @@
+#!/usr/bin/env python3
+"""tools/obj_to_scene.py: OBJ files written here are converted, and Raytracer loads and
+renders what comes out.
+
+    obj_to_scene_test.py RAYTRACER TOOL OUTPUT_DIR
+"""
+
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import unittest
+
+RAYTRACER, TOOL, OUTPUT = sys.argv[1:4] if len(sys.argv) >= 4 else (None, None, None)
+
+# A unit cube of quads, no normals; the last face (+z) uses negative indices.
+CUBE = """# cube
+v -1 -1 -1
+v  1 -1 -1
+v  1  1 -1
+v -1  1 -1
+v -1 -1  1
+v  1 -1  1
+v  1  1  1
+v -1  1  1
+f 1 4 3 2
+f 1 2 6 5
+f 2 3 7 6
+f 3 4 8 7
+f 4 1 5 8
+f -4 -3 -2 -1
+"""
+
+
+def read(path, mode="r"):
+    with open(path, mode) as handle:
+        return handle.read()
+
+
+def convert(obj_text, name, *options, mtl=None):
+    """Writes NAME.obj (and mats.mtl beside it), runs the tool; returns (process, scene path)."""
+    folder = os.path.join(OUTPUT, name)
+    shutil.rmtree(folder, ignore_errors=True)
+    os.makedirs(folder)
+    obj = os.path.join(folder, name + ".obj")
+    with open(obj, "w") as handle:
+        handle.write(obj_text)
+    if mtl is not None:
+        with open(os.path.join(folder, "mats.mtl"), "w") as handle:
+            handle.write(mtl)
+    scene = os.path.join(folder, name + ".scene")
+    run = subprocess.run([sys.executable, TOOL, obj, "-o", scene, *options], capture_output=True, text=True,
+                         timeout=60)
+    return run, scene
+
+
+def triangles_of(scene):
+    """[(3 positions, 3 normals, 3 (dif, spe, shi))] from a scene the tool wrote."""
+    with open(scene) as handle:
+        tokens = handle.read().split()
+    result, i = [], 0
+    while i < len(tokens):
+        if tokens[i] == "triangle":
+            corners, i = [], i + 1
+            for _ in range(3):
+                f = lambda at, n: tuple(float(t) for t in tokens[at + 1:at + 1 + n])
+                corners.append({"pos": f(i, 3), "nor": f(i + 4, 3), "dif": f(i + 8, 3), "spe": f(i + 12, 3),
+                                "shi": float(tokens[i + 17])})
+                i += 18
+            result.append(corners)
+        else:
+            i += 1
+    return result
+
+
+def render(scene):
+    """Raytracer's --bench JSON for the scene (a small render, validation on)."""
+    run = subprocess.run([RAYTRACER, scene, "--bench", "1", "--width", "64", "--height", "48", "--validate"],
+                         capture_output=True, text=True, timeout=300)
+    if run.returncode != 0:
+        raise AssertionError("Raytracer failed (%d):\n%s" % (run.returncode, run.stderr))
+    return json.loads(run.stdout.strip().splitlines()[-1])
+
+
+class ObjToScene(unittest.TestCase):
+    def test_cube_of_quads_with_negative_indices_renders(self):
+        run, scene = convert(CUBE, "cube", "--fit")
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertIn("12 triangles", run.stderr)
+        self.assertEqual(len(triangles_of(scene)), 12)
+        self.assertEqual(render(scene)["triangles"], 12)
+        # The picture too: exit 0 and a PNG.
+        png = scene[:-len(".scene")] + ".png"
+        drawn = subprocess.run([RAYTRACER, scene, "-o", png, "--width", "64", "--height", "48"],
+                               capture_output=True, text=True, timeout=300)
+        self.assertEqual(drawn.returncode, 0, drawn.stderr)
+        self.assertTrue(read(png, "rb")[:8] == b"\x89PNG\r\n\x1a\n")
+
+    def test_missing_normals_are_smooth_area_weighted_and_outward(self):
+        _run, scene = convert(CUBE, "cube_normals")
+        for triangle in triangles_of(scene):
+            for corner in triangle:
+                # Each corner of a cube touches three faces of equal area: the average
+                # normal points along the diagonal, away from the centre.
+                expected = tuple(c / math.sqrt(3.0) for c in corner["pos"])
+                for got, want in zip(corner["nor"], expected):
+                    self.assertAlmostEqual(got, want, places=6)
+
+    def test_fit_centres_the_model_in_front_of_the_camera(self):
+        # The cube made 5 units wide along x only, and moved far off.
+        box = "".join("v %g %g %g\n" % (10 + 2.5 * x, -4 + y, 7 + z) for x in (-1, 1) for y in (-1, 1) for z in (-1, 1))
+        run, scene = convert(box + "f 1 2 4 3\nf 5 6 8 7\nf 1 3 7 5\n", "cube_fit", "--fit")
+        self.assertEqual(run.returncode, 0, run.stderr)
+        positions = [c["pos"] for t in triangles_of(scene) for c in t]
+        for axis, centre in enumerate((0.0, 0.0, -3.0)):
+            low, high = min(p[axis] for p in positions), max(p[axis] for p in positions)
+            self.assertAlmostEqual((low + high) / 2, centre, places=5)
+        self.assertAlmostEqual(max(max(p[a] for p in positions) - min(p[a] for p in positions) for a in range(3)),
+                               1.5, places=5)
+
+    def test_corner_forms_given_normals_and_fan_triangulation(self):
+        obj = ("v 0 0 -3\nv 1 0 -3\nv 1.5 1 -3\nv 0.5 1.5 -3\nv -0.5 1 -3\nvt 0 0\nvn 0 0 2\n"
+               "f 1/1/1 2/1/1 3//1 4//-1 5/1/1\n")
+        run, scene = convert(obj, "pentagon")
+        self.assertEqual(run.returncode, 0, run.stderr)
+        triangles = triangles_of(scene)
+        self.assertEqual(len(triangles), 3)  # a pentagon: a fan of three
+        self.assertEqual([c["pos"] for c in triangles[1]], [(0, 0, -3), (1.5, 1, -3), (0.5, 1.5, -3)])
+        self.assertTrue(all(c["nor"] == (0, 0, 2) for t in triangles for c in t))  # as given
+        render(scene)
+
+    def test_materials_from_mtl_are_clamped(self):
+        mtl = "newmtl shiny\nKd 0.8 0.1 1.7\nKs 0.25\nNs 5000\nnewmtl plain\nKd 0.2 0.3 0.4\n"
+        obj = ("mtllib mats.mtl\nv 0 0 -3\nv 1 0 -3\nv 0 1 -3\nusemtl shiny\nf 1 2 3\nusemtl plain\nf 1 3 2\n"
+               "usemtl nosuch\nf 2 3 1\n")
+        run, scene = convert(obj, "materials", mtl=mtl)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertIn("materials.obj:9: warning: unknown material 'nosuch'", run.stderr)
+        shiny, plain, default = (t[0] for t in triangles_of(scene))
+        self.assertEqual((shiny["dif"], shiny["spe"], shiny["shi"]), ((0.8, 0.1, 1.0), (0.25, 0.25, 0.25), 1000.0))
+        self.assertEqual(plain["dif"], (0.2, 0.3, 0.4))
+        self.assertEqual(default["dif"], (0.75, 0.75, 0.75))
+        render(scene)
+
+        run, scene = convert(obj, "no_library")  # mats.mtl is not there
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertIn("no_library.obj:1: warning: material library", run.stderr)
+
+    def test_lights_and_ambient(self):
+        _run, scene = convert(CUBE, "lights", "--light", "1,2,3", "--light", "-1,5,0", "--ambient", "0.2,0.3,0.4")
+        text = read(scene)
+        self.assertTrue(text.startswith("14\namb: 0.2 0.3 0.4\n"), text[:40])
+        self.assertIn("light\npos: 1 2 3\ncol: 1 1 1\n", text)
+        self.assertIn("light\npos: -1 5 0\n", text)
+        _run, scene = convert(CUBE, "default_light")
+        self.assertIn("light\npos: 0 4 0\ncol: 1 1 1\n", read(scene))
+
+    def test_malformed_lines_name_file_and_line(self):
+        cases = {
+            "v 1 2\n": ":1: error: v expects 3 to 7 numbers, got 2",
+            "v 1 2 x\n": ":1: error: v: 'x' is not a number",
+            "v 0 0 0\nv 1 0 0\nf 1 2\n": ":3: error: a face needs at least 3 corners, got 2",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 4\n": ":5: error: vertex index 4 is out of range: 3",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n": ":4: error: vertex index -4 is out of range",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n": ":4: error: vertex index 0",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//1 2 3\n": ":4: error: normal index 1 is out of range: 0",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/a 2 3x\n": ":4: error: vertex index '3x' is not a whole number",
+            "# nothing\n": ": error: no faces (f) found",
+        }
+        for number, (obj, message) in enumerate(cases.items()):
+            with self.subTest(obj=obj):
+                run, scene = convert(obj, "bad%d" % number)
+                self.assertEqual(run.returncode, 1)
+                self.assertIn("bad%d.obj%s" % (number, message), run.stderr)
+                self.assertFalse(os.path.exists(scene))
+
+
+if __name__ == "__main__":
+    if None in (RAYTRACER, TOOL, OUTPUT):
+        sys.exit(__doc__)
+    os.makedirs(OUTPUT, exist_ok=True)
+    unittest.main(argv=[sys.argv[0], "-v"])
