@@ -2,8 +2,10 @@
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 SCENE ?= scenes/showcase.scene
+SANITIZE_DIR ?= build-sanitize
+FUZZ_SECONDS ?= 60
 
-.PHONY: all build deps bench-deps configure run test bench clean
+.PHONY: all build deps bench-deps configure run test check-hardening bench clean
 
 all: build
 
@@ -21,9 +23,26 @@ build: configure
 run: deps build
 	@tools/run_default.sh $(BUILD_DIR)/Raytracer $(SCENE)
 
-# Set-up, build, then the whole test suite on lavapipe with validation on.
+# Set-up, build, then the whole test suite on lavapipe with validation on; in CI
+# (CI=true, as .ci/run is run there) also the hardening checks below.
 test: deps build
-	@cd $(BUILD_DIR) && ctest --output-on-failure -j 2 --timeout 900
+	@start=$$(date +%s); cd $(BUILD_DIR) && ctest --output-on-failure -j 2 --timeout 900; \
+	    status=$$?; echo "test suite: $$(($$(date +%s) - start)) s"; exit $$status
+	@if [ "$${CI:-}" = true ]; then $(MAKE) --no-print-directory check-hardening; fi
+
+# The whole suite again, built by clang with AddressSanitizer and UndefinedBehaviorSanitizer
+# in $(SANITIZE_DIR) (any report fails its test), then the scene parser fuzzed for
+# FUZZ_SECONDS (any crash, leak, hang or out-of-memory fails). See README "Hardening".
+check-hardening: deps
+	@start=$$(date +%s); \
+	    cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRAYTRACER_SANITIZE=ON \
+	        -DCMAKE_CXX_COMPILER=clang++ > /dev/null && \
+	    cmake --build $(SANITIZE_DIR) -j $(JOBS) && \
+	    echo "sanitizer build: $$(($$(date +%s) - start)) s" && start=$$(date +%s) && \
+	    cd $(SANITIZE_DIR) && ctest --output-on-failure -j 2 --timeout 900; \
+	    status=$$?; echo "sanitizer suite: $$(($$(date +%s) - start)) s"; exit $$status
+	@start=$$(date +%s); tools/fuzz.sh $(FUZZ_SECONDS); \
+	    status=$$?; echo "fuzzing: $$(($$(date +%s) - start)) s"; exit $$status
 
 # Set-up with the benchmark's extras (Embree, matplotlib), build (embree_peer is built
 # once Embree is there), then Raytracer against its CPU peers: tables on stdout, CSV and

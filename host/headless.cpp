@@ -1,5 +1,6 @@
 #include "headless.h"
 
+#include "interrupt.h"
 #include "vk_check.h"
 
 #include <algorithm>
@@ -77,6 +78,7 @@ FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context,
     const Clock::time_point frameStart = Clock::now();
     TraceRegion region;
     while (nextRegion(target.scheduler, region)) {
+        throwIfInterrupted(); // Ctrl-C: the last submission is done, nothing more is sent
         VK_CHECK(vkResetCommandBuffer(target.commands, 0));
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
         begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;

@@ -102,3 +102,20 @@ void writePng(const std::filesystem::path& path, const Image8& image) {
         fail(path, "cannot replace with the written file: " + renameError.message());
     }
 }
+
+void reservePngOutput(const std::filesystem::path& path) {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) fail(path, "is a folder, not a file name");
+    std::filesystem::path temporary = path;
+    temporary += ".tmp";
+    FILE* file = std::fopen(temporary.c_str(), "wb");
+    if (!file) fail(path, "cannot create " + temporary.string() + ": " + std::strerror(errno));
+    std::fclose(file);
+}
+
+void releasePngOutput(const std::filesystem::path& path) {
+    std::filesystem::path temporary = path;
+    temporary += ".tmp";
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+}

@@ -19,3 +19,11 @@ Image8 readPng(const std::filesystem::path& path);
 // Writes "PATH.tmp" and renames it over PATH, so a failed write never leaves a
 // truncated PNG behind. Throws std::runtime_error "PATH: REASON" on failure.
 void writePng(const std::filesystem::path& path, const Image8& image);
+
+// Checks before any rendering that PATH can be written, by creating "PATH.tmp"
+// (empty; writePng replaces it). Throws std::runtime_error "PATH: REASON" when the
+// folder is missing or not writable, or PATH is a folder. An existing PATH is untouched.
+void reservePngOutput(const std::filesystem::path& path);
+
+// Removes "PATH.tmp" left by reservePngOutput (a failed or interrupted run).
+void releasePngOutput(const std::filesystem::path& path);

@@ -2,6 +2,8 @@
 // one try/catch that turns every failure into a message and an exit status.
 #include "bench.h"
 #include "headless.h"
+#include "image_limits.h"
+#include "interrupt.h"
 #include "options.h"
 #include "pipeline_cache.h"
 #include "scene.h"
@@ -18,20 +20,27 @@ namespace {
 // Exit statuses (listed in the README).
 enum ExitStatus {
     kSuccess = 0,
-    kRuntimeFailure = 1,   // Vulkan, device, shader or file output failure
-    kUsageError = 2,       // the command line makes no sense
-    kSceneError = 3,       // the scene file is missing or malformed
-    kValidationFailure = 4 // --validate and the validation layer printed a message
+    kRuntimeFailure = 1,    // Vulkan, device, shader or file output failure
+    kUsageError = 2,        // the command line makes no sense
+    kSceneError = 3,        // the scene file is missing or malformed
+    kValidationFailure = 4, // --validate and the validation layer printed a message
+    kInterrupted = 128      // + the signal: 130 for SIGINT (Ctrl-C), 143 for SIGTERM
 };
 
 // Renders headless: either one frame to options.outputPath, or a benchmark.
+// Before any work, the output file is known to be writable (its .tmp exists) and the
+// image to fit the device; a failure or Ctrl-C afterwards removes the .tmp again.
 void runHeadless(const Options& options, const Scene& scene, const StartupTimes& startup) {
+    installInterruptHandlers();
+    const bool writing = options.benchFrames == 0;
+    if (writing) reservePngOutput(options.outputPath);
     Context context;
     Renderer renderer;
     HeadlessTarget target;
     try {
         createInstance(context, {}, options.validate);
         createDevice(context, options.device);
+        checkImageFits(imageLimitsOf(context), options.width, options.height, true);
         RenderSettings settings{options.width, options.height, options.samplesPerPixel, options.depth,
                                 glm::vec3(options.background), options.fovDegrees,
                                 options.acceleration};
@@ -43,12 +52,14 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
         } else {
             renderHeadlessFrame(target, context, renderer,
                                 options.progress ? ProgressMode::Always : ProgressMode::Auto);
+            throwIfInterrupted();
             writePng(options.outputPath, readHeadlessImage(target, renderer));
         }
     } catch (...) {
         destroyHeadlessTarget(target, context);
         destroyRenderer(renderer, context);
         destroyContext(context);
+        if (writing) releasePngOutput(options.outputPath);
         throw;
     }
     destroyHeadlessTarget(target, context);
@@ -71,6 +82,9 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
 
     bool headless = !options.outputPath.empty() || options.benchFrames > 0;
     if (!headless && !runWindow(options, scene)) {
+        if (options.forceWindow)
+            throw std::runtime_error("--window was given, but no window can be opened: " +
+                                     windowUnavailableReason());
         options.outputPath = options.scenePath.stem().string() + ".png";
         std::cerr << "No display: rendering headless to " << options.outputPath.string() << '\n';
         headless = true;
@@ -97,6 +111,9 @@ int main(int argc, char** argv) {
     } catch (const SceneError& error) {
         std::cerr << error.what() << '\n';
         return kSceneError;
+    } catch (const Interrupted& interruption) {
+        std::cerr << "\nnote: " << interruption.what() << '\n';
+        return kInterrupted + interruption.signalNumber;
     } catch (const std::exception& error) {
         std::cerr << "error: " << error.what() << '\n';
         return kRuntimeFailure;

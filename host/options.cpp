@@ -62,6 +62,7 @@ std::string usageText() {
            "  --validate            enable the Khronos validation layer; any message fails the run\n"
            "  --no-cache            neither read nor write the shader cache ($XDG_CACHE_HOME/raytracer)\n"
            "  --progress            report progress on stderr even for a render under a second\n"
+           "  --window              show a window or fail; never fall back to a headless PNG\n"
            "  -h, --help            show this help\n"
            "\n"
            "Window keys: Esc or Q quits.\n";
@@ -113,6 +114,10 @@ Options parseOptions(int argc, const char* const* argv) {
             options.tileSide = parseCount(arg, value(), 1, 16384);
         } else if (arg == "--progress") {
             options.progress = true;
+        } else if (arg == "--window") {
+            options.forceWindow = true;
+        } else if (arg == "--redraw-continuously") {
+            options.redrawContinuously = true;
         } else if (arg.size() > 1 && arg[0] == '-') {
             throw UsageError("unknown option '" + arg + "' (see --help)");
         } else if (options.scenePath.empty()) {
@@ -124,5 +129,7 @@ Options parseOptions(int argc, const char* const* argv) {
     }
     if (options.scenePath.empty() && !options.showHelp)
         throw UsageError("no scene file given (see --help)");
+    if (options.forceWindow && (!options.outputPath.empty() || options.benchFrames > 0))
+        throw UsageError("--window cannot be combined with -o or --bench, which render headless");
     return options;
 }

@@ -27,6 +27,8 @@ struct Options {
     bool useCache = true;       // --no-cache: no shader or pipeline cache on disk
     std::uint32_t tileSide = 0; // --tile-size N (hidden, for tests): fixed N x N submissions; 0 adapts
     bool progress = false;      // --progress: report progress even for a short render
+    bool forceWindow = false;   // --window: a window or an error, never the headless fallback
+    bool redrawContinuously = false; // --redraw-continuously (hidden, for the soak test)
 };
 
 // A command line that does not make sense; what() is the message for the user.

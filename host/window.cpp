@@ -25,9 +25,11 @@ constexpr std::uint32_t kFramesInFlight = 2;
 // that there is no display, which the caller handles by rendering headless; after it,
 // every error is worth printing.
 bool glfwReady = false;
+std::string glfwInitError; // the last error before glfwInit succeeded
 
 void onGlfwError(int code, const char* description) {
     if (glfwReady) std::fprintf(stderr, "GLFW error 0x%x: %s\n", code, description);
+    else glfwInitError = description;
 }
 
 struct Frame {
@@ -49,6 +51,7 @@ struct Viewer {
     bool swapchainStale = true;  // no usable swapchain yet, or OUT_OF_DATE/SUBOPTIMAL was reported
     bool traceNeeded = true;     // the output image does not hold the current frame
     bool presentNeeded = true;   // the window does not show the output image
+    bool continuous = false;     // --redraw-continuously: trace every frame (soak test)
 };
 
 Viewer& viewerOf(GLFWwindow* window) { return *static_cast<Viewer*>(glfwGetWindowUserPointer(window)); }
@@ -65,6 +68,7 @@ void onRefresh(GLFWwindow* window) { viewerOf(window).presentNeeded = true; }
 
 void open(Viewer& viewer, const Options& options, const Scene& scene) {
     viewer.sceneName = options.scenePath.filename().string();
+    viewer.continuous = options.redrawContinuously;
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API); // Vulkan presents; no OpenGL context
     glfwWindowHintString(GLFW_X11_CLASS_NAME, "Raytracer");
     glfwWindowHintString(GLFW_X11_INSTANCE_NAME, "raytracer");
@@ -227,6 +231,7 @@ void drawFrame(Viewer& viewer) {
 
 void runLoop(Viewer& viewer) {
     while (!glfwWindowShouldClose(viewer.window)) {
+        if (viewer.continuous) viewer.traceNeeded = viewer.presentNeeded = true;
         // Sleep until something happens, unless a frame is still owed.
         if (viewer.presentNeeded || viewer.swapchainStale || viewer.resized)
             glfwPollEvents();
@@ -270,8 +275,11 @@ void close(Viewer& viewer) {
 
 } // namespace
 
+std::string windowUnavailableReason() { return glfwInitError.empty() ? "GLFW could not start" : glfwInitError; }
+
 bool runWindow(const Options& options, const Scene& scene) {
     glfwSetErrorCallback(onGlfwError);
+    glfwInitError.clear();
     if (!glfwInit()) return false; // no display: the caller renders headless
     glfwReady = true;
     Viewer viewer;

@@ -4,7 +4,12 @@
 #include "options.h"
 #include "scene.h"
 
+#include <string>
+
 // Shows the scene until the user closes the window. Returns false, having shown
 // nothing, when no window system is available (no display): the caller then
 // renders headless instead.
 bool runWindow(const Options& options, const Scene& scene);
+
+// Why the last runWindow returned false: GLFW's message, e.g. that DISPLAY is missing.
+std::string windowUnavailableReason();

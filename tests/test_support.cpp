@@ -20,10 +20,28 @@ std::string readWholeFile(const std::filesystem::path& path) {
     return text.str();
 }
 
+ProcessResult runRaytracerIn(const std::vector<std::string>& args, int timeoutSeconds,
+                             const std::filesystem::path& workingDirectory,
+                             const std::function<void(pid_t, const std::filesystem::path&)>& duringRun);
+
 } // namespace
 
 ProcessResult runRaytracer(const std::vector<std::string>& args, int timeoutSeconds,
                            const std::filesystem::path& workingDirectory) {
+    return runRaytracerIn(args, timeoutSeconds, workingDirectory, {});
+}
+
+ProcessResult runRaytracerWhile(const std::vector<std::string>& args,
+                                const std::function<void(pid_t, const std::filesystem::path&)>& duringRun,
+                                int timeoutSeconds) {
+    return runRaytracerIn(args, timeoutSeconds, {}, duringRun);
+}
+
+namespace {
+
+ProcessResult runRaytracerIn(const std::vector<std::string>& args, int timeoutSeconds,
+                             const std::filesystem::path& workingDirectory,
+                             const std::function<void(pid_t, const std::filesystem::path&)>& duringRun) {
     static int runCount = 0;
     std::filesystem::path captureDir = freshOutputDir("process-" + std::to_string(getpid()) + "-" +
                                                       std::to_string(runCount++));
@@ -51,6 +69,7 @@ ProcessResult runRaytracer(const std::vector<std::string>& args, int timeoutSeco
 
     ProcessResult result;
     auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeoutSeconds);
+    if (duringRun) duringRun(child, errPath);
     int status = 0;
     while (waitpid(child, &status, WNOHANG) == 0) {
         if (std::chrono::steady_clock::now() > deadline) {
@@ -66,6 +85,8 @@ ProcessResult runRaytracer(const std::vector<std::string>& args, int timeoutSeco
     result.err = readWholeFile(errPath);
     return result;
 }
+
+} // namespace
 
 std::filesystem::path freshOutputDir(const std::string& name) {
     std::filesystem::path dir = std::filesystem::path(TEST_OUTPUT_DIR) / name;

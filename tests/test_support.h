@@ -7,8 +7,11 @@
 #include "reference_renderer.h"
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
+
+#include <sys/types.h>
 
 struct ProcessResult {
     int exitCode = -1; // -1 when killed by a signal or the time limit
@@ -21,6 +24,12 @@ struct ProcessResult {
 // capturing both streams. Killed after timeoutSeconds.
 ProcessResult runRaytracer(const std::vector<std::string>& args, int timeoutSeconds = 300,
                            const std::filesystem::path& workingDirectory = {});
+
+// Like runRaytracer, and calls duringRun(pid, stderr file) once in this thread while the
+// process runs (to send it a signal, for example); the process is then waited for.
+ProcessResult runRaytracerWhile(const std::vector<std::string>& args,
+                                const std::function<void(pid_t, const std::filesystem::path&)>& duringRun,
+                                int timeoutSeconds = 300);
 
 // A fresh, empty folder under the build tree for one test's files.
 std::filesystem::path freshOutputDir(const std::string& name);

@@ -12,6 +12,7 @@ packages=(
     libglfw3-dev libglm-dev libstb-dev
     googletest libgtest-dev
     xvfb xauth x11-utils x11-apps xdotool
+    clang libclang-rt-14-dev  # make check-hardening: libFuzzer and the sanitizer build
 )
 # Optional: the benchmark only. Raytracer and the tests never need them.
 bench_packages=(libembree-dev python3-matplotlib)
