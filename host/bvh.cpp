@@ -60,11 +60,16 @@ struct Range {
 };
 
 gpu::GpuBvhNode makeNode(const Box& box, std::uint32_t index, std::uint32_t count) {
-    return {glm::vec4(box.lo, std::bit_cast<float>(index)), glm::vec4(box.hi, std::bit_cast<float>(count))};
+    return {glm::vec4(box.lo, std::bit_cast<float>(index)),
+            glm::vec4(box.hi, std::bit_cast<float>(count))};
 }
 
-void setIndex(gpu::GpuBvhNode& node, std::uint32_t index) { node.boundsMinAndIndex.w = std::bit_cast<float>(index); }
-void setCount(gpu::GpuBvhNode& node, std::uint32_t count) { node.boundsMaxAndCount.w = std::bit_cast<float>(count); }
+void setIndex(gpu::GpuBvhNode& node, std::uint32_t index) {
+    node.boundsMinAndIndex.w = std::bit_cast<float>(index);
+}
+void setCount(gpu::GpuBvhNode& node, std::uint32_t count) {
+    node.boundsMaxAndCount.w = std::bit_cast<float>(count);
+}
 
 class Builder {
   public:
@@ -72,10 +77,11 @@ class Builder {
         : boxes_(input.boxes.data()), sphereCount_(input.sphereCount), settings_(settings),
           centroids_(input.size() * 3) {
         order.resize(input.size());
-        for (std::uint32_t id = 0; id < order.size(); ++id) {
-            order[id] = id;
-            for (int axis = 0; axis < 3; ++axis)
-                centroids_[3 * id + axis] = 0.5f * (boxes_[6 * id + axis] + boxes_[6 * id + 3 + axis]);
+        for (std::size_t id = 0; id < order.size(); ++id) {
+            order[id] = std::uint32_t(id);
+            for (std::size_t axis = 0; axis < 3; ++axis)
+                centroids_[3 * id + axis] =
+                    0.5f * (boxes_[6 * id + axis] + boxes_[6 * id + 3 + axis]);
         }
     }
 
@@ -96,7 +102,8 @@ class Builder {
     }
 
     // Writes the subtree over range depth first to out; returns the depth of its deepest leaf.
-    std::uint32_t build(const Range& range, std::uint32_t depth, std::vector<gpu::GpuBvhNode>& out) {
+    std::uint32_t build(const Range& range, std::uint32_t depth,
+                        std::vector<gpu::GpuBvhNode>& out) {
         const std::uint32_t self = std::uint32_t(out.size());
         out.push_back(makeNode(range.bounds, 0, 0));
         const std::uint32_t n = range.size();
@@ -108,13 +115,15 @@ class Builder {
         bool split = extent > 0.0f && sahSplit(range, axis, left, right);
         bool withinDepth = split && depth + 1 + levelsNeeded(std::max(left.size(), right.size())) <=
                                         settings_.maxDepth;
-        if (n <= settings_.maxLeafSize && (!split || !withinDepth)) return makeLeaf(range, self, depth, out);
+        if (n <= settings_.maxLeafSize && (!split || !withinDepth))
+            return makeLeaf(range, self, depth, out);
         if (!withinDepth) medianSplit(range, axis, extent > 0.0f, left, right);
 
         std::uint32_t subtreeDepth = 0;
         if (depth < kParallelDepth && n >= kParallelMinimum && settings_.threads > 1) {
             std::vector<gpu::GpuBvhNode> leftNodes, rightNodes;
-            auto leftTask = std::async(std::launch::async, [&] { return build(left, depth + 1, leftNodes); });
+            auto leftTask =
+                std::async(std::launch::async, [&] { return build(left, depth + 1, leftNodes); });
             std::uint32_t rightDepth = build(right, depth + 1, rightNodes);
             subtreeDepth = std::max(leftTask.get(), rightDepth);
             splice(leftNodes, out);
@@ -139,7 +148,9 @@ class Builder {
         const float* c = centroids_.data() + 3 * std::size_t(id);
         return {c[0], c[1], c[2]};
     }
-    float centroid(std::uint32_t id, int axis) const { return centroids_[3 * std::size_t(id) + axis]; }
+    float centroid(std::uint32_t id, int axis) const {
+        return centroids_[3 * std::size_t(id) + axis];
+    }
 
     static int longestAxis(const Box& box) {
         glm::vec3 e = box.hi - box.lo;
@@ -193,7 +204,8 @@ class Builder {
         const float area = range.bounds.halfArea();
         const float leafCost = area * float(range.size());
         if (best < 0) return false;
-        if (range.size() <= settings_.maxLeafSize && leafCost <= settings_.traversalCost * area + bestCost)
+        if (range.size() <= settings_.maxLeafSize &&
+            leafCost <= settings_.traversalCost * area + bestCost)
             return false;
 
         auto first = order.begin() + range.begin;
@@ -215,8 +227,10 @@ class Builder {
     void medianSplit(const Range& range, int axis, bool sortByCentroid, Range& left, Range& right) {
         std::uint32_t mid = range.begin + range.size() / 2;
         if (sortByCentroid)
-            std::nth_element(order.begin() + range.begin, order.begin() + mid, order.begin() + range.end,
-                             [&](std::uint32_t a, std::uint32_t b) { return centroid(a, axis) < centroid(b, axis); });
+            std::nth_element(order.begin() + range.begin, order.begin() + mid,
+                             order.begin() + range.end, [&](std::uint32_t a, std::uint32_t b) {
+                                 return centroid(a, axis) < centroid(b, axis);
+                             });
         left = rangeOf(range.begin, mid);
         right = rangeOf(mid, range.end);
     }
@@ -243,7 +257,8 @@ class Builder {
     }
 
     // Appends a subtree built in its own array, moving its right-child indices along.
-    static void splice(const std::vector<gpu::GpuBvhNode>& subtree, std::vector<gpu::GpuBvhNode>& out) {
+    static void splice(const std::vector<gpu::GpuBvhNode>& subtree,
+                       std::vector<gpu::GpuBvhNode>& out) {
         const std::uint32_t offset = std::uint32_t(out.size());
         for (gpu::GpuBvhNode node : subtree) {
             if (!isLeaf(node)) setIndex(node, rightChild(node) + offset);
@@ -259,9 +274,15 @@ class Builder {
 
 } // namespace
 
-bool isLeaf(const gpu::GpuBvhNode& node) { return std::bit_cast<std::uint32_t>(node.boundsMaxAndCount.w) != 0; }
-std::uint32_t rightChild(const gpu::GpuBvhNode& node) { return std::bit_cast<std::uint32_t>(node.boundsMinAndIndex.w); }
-std::uint32_t firstPrimitive(const gpu::GpuBvhNode& node) { return rightChild(node); }
+bool isLeaf(const gpu::GpuBvhNode& node) {
+    return std::bit_cast<std::uint32_t>(node.boundsMaxAndCount.w) != 0;
+}
+std::uint32_t rightChild(const gpu::GpuBvhNode& node) {
+    return std::bit_cast<std::uint32_t>(node.boundsMinAndIndex.w);
+}
+std::uint32_t firstPrimitive(const gpu::GpuBvhNode& node) {
+    return rightChild(node);
+}
 std::uint32_t primitiveCount(const gpu::GpuBvhNode& node) {
     return std::bit_cast<std::uint32_t>(node.boundsMaxAndCount.w) & BVH_COUNT_MASK;
 }
@@ -275,12 +296,14 @@ Bvh buildBvh(const PrimitiveBounds& input, const BvhSettings& settings) {
     if (n == 0) return bvh;
     if (n > BVH_COUNT_MASK || input.sphereCount > n)
         throw std::invalid_argument("buildBvh: " + std::to_string(n) + " primitives are too many");
-    if (settings.maxLeafSize < 1) throw std::invalid_argument("buildBvh: maxLeafSize must be at least 1");
+    if (settings.maxLeafSize < 1)
+        throw std::invalid_argument("buildBvh: maxLeafSize must be at least 1");
 
     Builder builder(input, settings);
     Range root = builder.rangeOf(0, std::uint32_t(n));
     if (builder.levelsNeeded(root.size()) > settings.maxDepth)
-        throw std::invalid_argument("buildBvh: " + std::to_string(n) + " primitives cannot fit in " +
+        throw std::invalid_argument("buildBvh: " + std::to_string(n) +
+                                    " primitives cannot fit in " +
                                     std::to_string(settings.maxDepth) + " levels");
     bvh.nodes.reserve(n);
     bvh.depth = builder.build(root, 0, bvh.nodes);
@@ -289,10 +312,12 @@ Bvh buildBvh(const PrimitiveBounds& input, const BvhSettings& settings) {
     for (gpu::GpuBvhNode& node : bvh.nodes) {
         if (!isLeaf(node)) continue;
         const std::uint32_t begin = firstPrimitive(node), count = primitiveCount(node);
-        std::vector<std::uint32_t>& slots = holdsSpheres(node) ? bvh.sphereOrder : bvh.triangleOrder;
+        std::vector<std::uint32_t>& slots =
+            holdsSpheres(node) ? bvh.sphereOrder : bvh.triangleOrder;
         const std::uint32_t idBase = holdsSpheres(node) ? 0 : input.sphereCount;
         setIndex(node, std::uint32_t(slots.size()));
-        for (std::uint32_t i = begin; i < begin + count; ++i) slots.push_back(builder.order[i] - idBase);
+        for (std::uint32_t i = begin; i < begin + count; ++i)
+            slots.push_back(builder.order[i] - idBase);
     }
     return bvh;
 }

@@ -9,6 +9,7 @@
 
 #include <glslang/build_info.h>
 
+#include <cstddef>
 #include <string>
 
 namespace {
@@ -31,7 +32,8 @@ std::uint64_t traceSourceKey() {
 
 // Fills result step by step; the caller destroys what was made if a step throws.
 void buildTracePipeline(TracePipeline& result, const Context& context,
-                        const std::vector<std::uint32_t>& spirv, VkPipelineCache cache) {
+                        const std::vector<std::uint32_t>& spirv, VkPipelineCache cache,
+                        const TraceSpecialization& specialization) {
     // Binding 0 is the output image the kernel writes; every other binding is a
     // read-only range of the scene buffer (see shaders/shared.h for what each holds).
     std::vector<VkDescriptorSetLayoutBinding> bindings;
@@ -64,6 +66,13 @@ void buildTracePipeline(TracePipeline& result, const Context& context,
     pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     pipelineInfo.stage.module = module;
     pipelineInfo.stage.pName = "main";
+    const VkSpecializationMapEntry specializationEntries[] = {
+        {SPEC_USE_HIERARCHY, offsetof(TraceSpecialization, useHierarchy), sizeof(VkBool32)},
+        {SPEC_HAS_SPHERES, offsetof(TraceSpecialization, hasSpheres), sizeof(VkBool32)},
+        {SPEC_HAS_TRIANGLES, offsetof(TraceSpecialization, hasTriangles), sizeof(VkBool32)}};
+    const VkSpecializationInfo specializationInfo{3, specializationEntries, sizeof(specialization),
+                                                 &specialization};
+    pipelineInfo.stage.pSpecializationInfo = &specializationInfo;
     pipelineInfo.layout = result.layout;
     VkResult created = vkCreateComputePipelines(context.device, cache, 1, &pipelineInfo, nullptr,
                                                 &result.pipeline);
@@ -75,10 +84,10 @@ void buildTracePipeline(TracePipeline& result, const Context& context,
 } // namespace
 
 TracePipeline createTracePipeline(const Context& context, const std::vector<std::uint32_t>& spirv,
-                                  VkPipelineCache cache) {
+                                  VkPipelineCache cache, TraceSpecialization specialization) {
     TracePipeline result;
     try {
-        buildTracePipeline(result, context, spirv, cache);
+        buildTracePipeline(result, context, spirv, cache, specialization);
     } catch (...) {
         destroyTracePipeline(context, result);
         throw;
@@ -87,7 +96,8 @@ TracePipeline createTracePipeline(const Context& context, const std::vector<std:
 }
 
 TracePipeline loadTracePipeline(const Context& context,
-                                const std::filesystem::path& cacheDirectory) {
+                                const std::filesystem::path& cacheDirectory,
+                                TraceSpecialization specialization) {
     const std::uint64_t sourceKey = traceSourceKey();
     std::vector<std::uint32_t> spirv;
     if (std::optional<std::vector<std::uint32_t>> cached =
@@ -97,11 +107,13 @@ TracePipeline loadTracePipeline(const Context& context,
         spirv = compileComputeShader("trace.comp", embeddedShaderLoader());
         storeCachedSpirv(cacheDirectory, sourceKey, spirv);
     }
+    // One driver cache per specialization, as each compiles to different code.
+    const std::uint64_t spirvHash = hashBytes(spirv.data(), spirv.size() * sizeof(std::uint32_t));
     PipelineCache cache = openPipelineCache(
-        context, cacheDirectory, hashBytes(spirv.data(), spirv.size() * sizeof(std::uint32_t)));
+        context, cacheDirectory, hashBytes(&specialization, sizeof(specialization), spirvHash));
     TracePipeline pipeline;
     try {
-        pipeline = createTracePipeline(context, spirv, cache.cache);
+        pipeline = createTracePipeline(context, spirv, cache.cache, specialization);
         savePipelineCache(context, cache);
     } catch (...) {
         destroyTracePipeline(context, pipeline);

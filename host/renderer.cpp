@@ -7,7 +7,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 
 namespace {
 
@@ -58,7 +57,7 @@ gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t tileX, s
     params.image = glm::uvec4(settings.width, settings.height, settings.samplesPerPixel,
                               std::min<std::uint32_t>(settings.depth, MAX_DEPTH));
     params.counts = glm::uvec4(renderer.scene.sphereCount, renderer.scene.triangleCount,
-                               renderer.scene.lightCount, renderer.scene.bvhNodeCount);
+                               renderer.scene.lightCount, 0);
     params.tile = glm::uvec4(tileX, tileY, 0, 0);
     return params;
 }
@@ -69,10 +68,7 @@ gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t tileX, s
 PackedScene packWithHierarchy(const Scene& scene, Acceleration acceleration) {
     PackedScene packed = packScene(scene);
     const auto start = std::chrono::steady_clock::now();
-    BvhSettings bvhSettings; // TEMP-EXPERIMENT
-    if (const char* e = std::getenv("RT_BVH_LEAF")) bvhSettings.maxLeafSize = std::uint32_t(std::atoi(e));
-    if (const char* e = std::getenv("RT_BVH_CT")) bvhSettings.traversalCost = float(std::atof(e));
-    Bvh bvh = buildBvh(primitiveBounds(packed), bvhSettings);
+    Bvh bvh = buildBvh(primitiveBounds(packed));
     const double buildMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     applyLeafOrder(packed, bvh);
@@ -92,8 +88,12 @@ PackedScene packWithHierarchy(const Scene& scene, Acceleration acceleration) {
 void createRenderer(Renderer& renderer, const Context& context, const Scene& scene,
                     const RenderSettings& settings) {
     renderer.settings = settings;
-    renderer.pipeline = loadTracePipeline(context, settings.cacheDirectory);
     renderer.scene = uploadScene(context, packWithHierarchy(scene, settings.acceleration));
+    TraceSpecialization specialization;
+    specialization.useHierarchy = renderer.scene.bvhNodeCount > 0;
+    specialization.hasSpheres = renderer.scene.sphereCount > 0;
+    specialization.hasTriangles = renderer.scene.triangleCount > 0;
+    renderer.pipeline = loadTracePipeline(context, settings.cacheDirectory, specialization);
     const std::size_t primitives = renderer.scene.sphereCount + renderer.scene.triangleCount;
     if (primitives > 0)
         std::fprintf(stderr, "Scene memory: %llu bytes, %.1f bytes per primitive\n",

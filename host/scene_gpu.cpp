@@ -40,7 +40,8 @@ template <typename T> class Deduplicator {
   public:
     explicit Deduplicator(std::vector<T>& values) : values_(values) {}
     std::uint32_t indexOf(const T& value) {
-        auto [it, inserted] = indices_.try_emplace(BytesKey<T>{value}, static_cast<std::uint32_t>(values_.size()));
+        auto [it, inserted] =
+            indices_.try_emplace(BytesKey<T>{value}, static_cast<std::uint32_t>(values_.size()));
         if (inserted) values_.push_back(value);
         return it->second;
     }
@@ -91,8 +92,10 @@ PackedScene packScene(const Scene& scene) {
     // 28 bytes a vertex: the material index rides in the position's unused w, and the
     // normal takes three floats rather than a padded vec4.
     for (const PackedVertex& vertex : vertices) {
-        packed.vertexPositions.push_back(glm::vec4(glm::vec3(vertex.position), std::bit_cast<float>(vertex.material)));
-        packed.vertexNormals.insert(packed.vertexNormals.end(), {vertex.normal.x, vertex.normal.y, vertex.normal.z});
+        packed.vertexPositions.push_back(
+            glm::vec4(glm::vec3(vertex.position), std::bit_cast<float>(vertex.material)));
+        packed.vertexNormals.insert(packed.vertexNormals.end(),
+                                    {vertex.normal.x, vertex.normal.y, vertex.normal.z});
     }
 
     for (const Light& light : scene.lights)
@@ -128,7 +131,8 @@ PrimitiveBounds primitiveBounds(const PackedScene& packed) {
     bounds.boxes.reserve(6 * (packed.spheres.size() + packed.triangleVertices.size() / 3));
     for (const glm::vec4& sphere : packed.spheres) {
         glm::dvec3 center(sphere);
-        double magnitude = std::max({std::abs(center.x), std::abs(center.y), std::abs(center.z)}) + sphere.w;
+        double magnitude =
+            std::max({std::abs(center.x), std::abs(center.y), std::abs(center.z)}) + sphere.w;
         double reach = double(sphere.w) + kSphereBoxMargin * magnitude;
         appendBox(bounds.boxes, glm::vec3(center - reach), glm::vec3(center + reach));
     }
@@ -154,7 +158,8 @@ void applyLeafOrder(PackedScene& packed, const Bvh& bvh) {
     std::vector<std::uint32_t> triangleVertices(packed.triangleVertices.size());
     for (std::size_t slot = 0; slot < bvh.triangleOrder.size(); ++slot)
         for (std::size_t k = 0; k < 3; ++k)
-            triangleVertices[3 * slot + k] = packed.triangleVertices[3 * std::size_t(bvh.triangleOrder[slot]) + k];
+            triangleVertices[3 * slot + k] =
+                packed.triangleVertices[3 * std::size_t(bvh.triangleOrder[slot]) + k];
     packed.spheres = std::move(spheres);
     packed.sphereMaterials = std::move(sphereMaterials);
     packed.triangleVertices = std::move(triangleVertices);
@@ -169,7 +174,8 @@ struct ArrayView {
     VkDeviceSize bytes;
 };
 
-template <typename T> ArrayView view(std::uint32_t binding, const char* name, const std::vector<T>& values) {
+template <typename T>
+ArrayView view(std::uint32_t binding, const char* name, const std::vector<T>& values) {
     return {binding, name, values.data(), values.size() * sizeof(T)};
 }
 
@@ -201,18 +207,21 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed) {
     VkDeviceSize offsets[BINDING_COUNT]{};
     for (const ArrayView& array : arrays) {
         if (array.bytes > maxRange)
-            throw std::runtime_error(std::string("the scene's ") + array.name + " take " +
-                                     std::to_string(array.bytes) + " bytes, more than this device's "
-                                     "maxStorageBufferRange of " + std::to_string(maxRange) + " bytes (" +
-                                     context.properties.deviceName + ")");
+            throw std::runtime_error(
+                std::string("the scene's ") + array.name + " take " + std::to_string(array.bytes) +
+                " bytes, more than this device's "
+                "maxStorageBufferRange of " +
+                std::to_string(maxRange) + " bytes (" + context.properties.deviceName + ")");
         offsets[array.binding] = array.bytes ? size : 0;
         size = alignUp(size + array.bytes, alignment);
     }
     std::vector<std::uint8_t> contents(size, 0);
     for (const ArrayView& array : arrays) {
-        if (array.bytes) std::memcpy(contents.data() + offsets[array.binding], array.data, array.bytes);
+        if (array.bytes)
+            std::memcpy(contents.data() + offsets[array.binding], array.data, array.bytes);
     }
-    scene.buffer = createDeviceBuffer(context, contents.data(), size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    scene.buffer =
+        createDeviceBuffer(context, contents.data(), size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     for (const ArrayView& array : arrays)
         scene.ranges[array.binding] = {scene.buffer.buffer, offsets[array.binding],
                                        array.bytes ? array.bytes : 16};

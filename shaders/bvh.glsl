@@ -1,7 +1,8 @@
 // Walking the bounding volume hierarchy (host/bvh.cpp builds it; node layout in shared.h),
 // and the two scene queries shading uses, which walk it or test every primitive.
 // Needs: Ray (camera.glsl), the primitive tests and brute-force loops (intersect.glsl),
-// the node buffer and params (trace.comp).
+// the node buffer and the specialization constants useHierarchy, sceneHasSpheres and
+// sceneHasTriangles (trace.comp).
 
 // A ray prepared for the slab test: 1/d per axis (+-inf where d is +-0), and for each of
 // the box's two planes per axis the t to use when the origin lies exactly in that plane.
@@ -52,21 +53,22 @@ bool hitBox(BoxRay ray, vec3 lo, vec3 hi, float tLimit, out float tEntry) {
 uint nodeIndexField(GpuBvhNode node) { return floatBitsToUint(node.boundsMinAndIndex.w); }
 uint nodeCountField(GpuBvhNode node) { return floatBitsToUint(node.boundsMaxAndCount.w); }
 
-// The next float above a positive t (t itself for +inf): a limit that lets a primitive at
-// exactly t through, for the tie rule below.
+// The next float above a finite positive t (FLOAT_MAX gives +inf): a limit that lets a
+// primitive at exactly t through, for the tie rule below.
 float nextFloatUp(float t) { return uintBitsToFloat(floatBitsToUint(t) + 1u); }
 
 // The primitives of one leaf against the ray. Closest hit: equal distances go to the
 // lower (kind, index), spheres first, which is what the brute-force loops give (they take
 // primitives in that order and keep the first of equals), so both paths agree exactly.
-// Returns true in any-hit mode when something was hit.
+// Returns true in any-hit mode when something was hit. The kind test folds away for a
+// scene of one kind (specialization constants, trace.comp).
 bool intersectLeaf(Ray ray, ShearedRay sheared, GpuBvhNode leaf, bool anyHitMode, inout Hit hit) {
     uint first = nodeIndexField(leaf);
     uint count = nodeCountField(leaf);
     uint end = first + (count & BVH_COUNT_MASK);
     float limit = anyHitMode ? hit.t : nextFloatUp(hit.t);
     float t;
-    if ((count & BVH_LEAF_SPHERES) != 0u) {
+    if (sceneHasSpheres && (!sceneHasTriangles || (count & BVH_LEAF_SPHERES) != 0u)) {
         for (uint i = first; i < end; ++i) {
             if (!intersectSphere(ray, spheres[i], limit, t)) continue;
             if (anyHitMode) return true;
@@ -96,6 +98,12 @@ bool intersectLeaf(Ray ray, ShearedRay sheared, GpuBvhNode leaf, bool anyHitMode
 // whose entry lies beyond the closest hit so far is skipped. Any-hit mode (shadow rays)
 // returns at the first hit found. hit.t is the limit on entry (the light's distance for
 // shadow rays, FLOAT_MAX for closest hit); returns whether any-hit mode found something.
+//
+// Loop shape "while-while" (Aila & Laine, "Understanding the Efficiency of Ray Traversal
+// on GPUs", HPG 2009): an inner loop walks interior nodes until the ray stands at a leaf,
+// then the leaf is tested. lavapipe runs 8 rays as one SIMD vector and executes both sides
+// of every branch, masked; with one loop holding both the interior and the leaf code
+// ("if-if"), each step paid for a leaf test too. Same images, 5-25% faster (README).
 bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
     ShearedRay sheared = shearRay(ray);
     BoxRay slabRay = boxRay(ray);
@@ -104,17 +112,31 @@ bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
     uint stackSize = 0u;
     uint index = 0u;
     GpuBvhNode node = bvhNodes[0];
+    bool popNext = false; // the current node is done with: take the next from the stack
     for (;;) {
-        if (nodeCountField(node) != 0u) {
-            if (intersectLeaf(ray, sheared, node, anyHitMode, hit)) return true;
-        } else {
+        for (;;) {
+            if (popNext) {
+                // The nearest pending node that can still hold something nearer than the hit.
+                popNext = false;
+                bool found = false;
+                while (stackSize > 0u && !found) {
+                    --stackSize;
+                    found = stackEntry[stackSize] <= hit.t * SLAB_EXIT_SCALE;
+                }
+                if (!found) return false;
+                index = stackNode[stackSize];
+                node = bvhNodes[index];
+            }
+            if (nodeCountField(node) != 0u) break; // a leaf
             uint leftIndex = index + 1u;
             uint rightIndex = nodeIndexField(node);
             GpuBvhNode left = bvhNodes[leftIndex];
             GpuBvhNode right = bvhNodes[rightIndex];
             float leftEntry, rightEntry;
-            bool hitLeft = hitBox(slabRay, left.boundsMinAndIndex.xyz, left.boundsMaxAndCount.xyz, hit.t, leftEntry);
-            bool hitRight = hitBox(slabRay, right.boundsMinAndIndex.xyz, right.boundsMaxAndCount.xyz, hit.t, rightEntry);
+            bool hitLeft = hitBox(slabRay, left.boundsMinAndIndex.xyz, left.boundsMaxAndCount.xyz,
+                                  hit.t, leftEntry);
+            bool hitRight = hitBox(slabRay, right.boundsMinAndIndex.xyz,
+                                   right.boundsMaxAndCount.xyz, hit.t, rightEntry);
             if (hitLeft && hitRight) {
                 bool rightFirst = rightEntry < leftEntry;
                 stackNode[stackSize] = rightFirst ? leftIndex : rightIndex;
@@ -122,29 +144,21 @@ bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
                 ++stackSize;
                 index = rightFirst ? rightIndex : leftIndex;
                 node = rightFirst ? right : left;
-                continue;
-            }
-            if (hitLeft || hitRight) {
+            } else if (hitLeft || hitRight) {
                 index = hitLeft ? leftIndex : rightIndex;
                 node = hitLeft ? left : right;
-                continue;
+            } else {
+                popNext = true;
             }
         }
-        // Pop the nearest pending node that can still hold something nearer than the hit.
-        bool found = false;
-        while (stackSize > 0u && !found) {
-            --stackSize;
-            found = stackEntry[stackSize] <= hit.t * SLAB_EXIT_SCALE;
-        }
-        if (!found) return false;
-        index = stackNode[stackSize];
-        node = bvhNodes[index];
+        if (intersectLeaf(ray, sheared, node, anyHitMode, hit)) return true;
+        popNext = true;
     }
 }
 
 // The nearest hit along the ray over every sphere and triangle.
 Hit closestHit(Ray ray) {
-    if (params.counts.w == 0u) return closestHitEveryPrimitive(ray);
+    if (!useHierarchy) return closestHitEveryPrimitive(ray);
     Hit hit = Hit(FLOAT_MAX, HIT_NONE, 0u, vec3(0.0));
     traverseBvh(ray, false, hit);
     return hit;
@@ -152,7 +166,7 @@ Hit closestHit(Ray ray) {
 
 // Whether anything lies on the ray with 0 < t < tMax (shadow rays); stops at the first hit.
 bool anyHit(Ray ray, float tMax) {
-    if (params.counts.w == 0u) return anyHitEveryPrimitive(ray, tMax);
+    if (!useHierarchy) return anyHitEveryPrimitive(ray, tMax);
     Hit hit = Hit(tMax, HIT_NONE, 0u, vec3(0.0));
     return traverseBvh(ray, true, hit);
 }

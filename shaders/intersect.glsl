@@ -109,12 +109,12 @@ void triangleCorners(uint i, out vec3 a, out vec3 b, out vec3 c) {
 Hit closestHitEveryPrimitive(Ray ray) {
     Hit hit = Hit(FLOAT_MAX, HIT_NONE, 0u, vec3(0.0));
     float t;
-    for (uint i = 0u; i < params.counts.x; ++i) {
+    for (uint i = 0u; sceneHasSpheres && i < params.counts.x; ++i) {
         if (intersectSphere(ray, spheres[i], hit.t, t)) hit = Hit(t, HIT_SPHERE, i, vec3(0.0));
     }
     ShearedRay sheared = shearRay(ray);
     vec3 a, b, c, barycentric;
-    for (uint i = 0u; i < params.counts.y; ++i) {
+    for (uint i = 0u; sceneHasTriangles && i < params.counts.y; ++i) {
         triangleCorners(i, a, b, c);
         if (intersectTriangle(sheared, a, b, c, hit.t, t, barycentric)) {
             hit = Hit(t, HIT_TRIANGLE, i, barycentric);
@@ -126,12 +126,12 @@ Hit closestHitEveryPrimitive(Ray ray) {
 // Whether anything lies on the ray with 0 < t < tMax, testing every primitive.
 bool anyHitEveryPrimitive(Ray ray, float tMax) {
     float t;
-    for (uint i = 0u; i < params.counts.x; ++i) {
+    for (uint i = 0u; sceneHasSpheres && i < params.counts.x; ++i) {
         if (intersectSphere(ray, spheres[i], tMax, t)) return true;
     }
     ShearedRay sheared = shearRay(ray);
     vec3 a, b, c, barycentric;
-    for (uint i = 0u; i < params.counts.y; ++i) {
+    for (uint i = 0u; sceneHasTriangles && i < params.counts.y; ++i) {
         triangleCorners(i, a, b, c);
         if (intersectTriangle(sheared, a, b, c, tMax, t, barycentric)) return true;
     }

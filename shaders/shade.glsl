@@ -33,7 +33,7 @@ GpuMaterial vertexMaterial(uint v) { return materials[floatBitsToUint(vertexPosi
 // interpolated normal is zero.
 SurfacePoint surfaceAt(Ray ray, Hit hit) {
     SurfacePoint s;
-    if (hit.kind == HIT_SPHERE) {
+    if (sceneHasSpheres && (!sceneHasTriangles || hit.kind == HIT_SPHERE)) {
         vec4 sphere = spheres[hit.index];
         vec3 radial = normalizeOr(ray.origin + hit.t * ray.direction - sphere.xyz, -ray.direction);
         s.position = sphere.xyz + sphere.w * radial;

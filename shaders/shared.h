@@ -41,6 +41,11 @@ using uint = std::uint32_t;
 #define BINDING_BVH_NODES 8        // GpuBvhNode per hierarchy node, depth first (host/bvh.h)
 #define BINDING_COUNT 9
 
+// Specialization constant ids (host/pipeline.h, TraceSpecialization), all bool.
+#define SPEC_USE_HIERARCHY 0 // walk the BVH (else test every primitive: scenes too small for one)
+#define SPEC_HAS_SPHERES 1   // the scene holds spheres (else their code is compiled out)
+#define SPEC_HAS_TRIANGLES 2 // the scene holds triangles (likewise)
+
 // The bounding volume hierarchy (host/bvh.cpp builds it, shaders/bvh.glsl walks it).
 // Traversal keeps the far child of each interior node on a fixed stack of this many
 // entries, at most one per level, so the builder keeps every leaf within this depth.
@@ -80,7 +85,7 @@ struct GpuFrameParams {
     vec4 ambient;    // rgb ambient light added once per shading point, w unused
     vec4 camera;     // x: aspect * tan(fov/2), y: tan(fov/2), zw unused
     uvec4 image;     // x: width, y: height, z: samples per pixel, w: reflection depth
-    uvec4 counts;    // x: spheres, y: triangles, z: lights, w: hierarchy nodes (0: test every primitive)
+    uvec4 counts;    // x: spheres, y: triangles, z: lights, w unused
     uvec4 tile;      // xy: first pixel of this dispatch, zw unused
 };
 

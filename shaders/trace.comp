@@ -9,6 +9,17 @@
 
 layout(local_size_x = WORKGROUP_SIZE_X, local_size_y = WORKGROUP_SIZE_Y, local_size_z = 1) in;
 
+// What the scene needs, as specialization constants: the driver compiles the kernel for
+// their values, so code for what is absent costs nothing. lavapipe runs both sides of a
+// branch on a uniform value, masked: with the choice in a push constant, the unused
+// hierarchy code made the brute-force path 50% slower on small scenes, and the sphere
+// code in every leaf slowed triangle-only scenes by 10%.
+// Whether closestHit and anyHit walk the hierarchy (bvh.glsl) or test every primitive.
+layout(constant_id = SPEC_USE_HIERARCHY) const bool useHierarchy = false;
+// Whether the scene holds spheres, and triangles.
+layout(constant_id = SPEC_HAS_SPHERES) const bool sceneHasSpheres = true;
+layout(constant_id = SPEC_HAS_TRIANGLES) const bool sceneHasTriangles = true;
+
 // Camera, counts, image size, samples and depth for this dispatch (see GpuFrameParams).
 layout(push_constant) uniform FrameParamsBlock {
     GpuFrameParams params;
@@ -34,7 +45,7 @@ layout(set = 0, binding = BINDING_VERTEX_NORMALS, std430) readonly buffer Normal
 layout(set = 0, binding = BINDING_MATERIALS, std430) readonly buffer MaterialBuffer { GpuMaterial materials[]; };
 // The point lights.
 layout(set = 0, binding = BINDING_LIGHTS, std430) readonly buffer LightBuffer { GpuLight lights[]; };
-// The hierarchy over spheres and triangles, depth first (params.counts.w nodes; 0: none).
+// The hierarchy over spheres and triangles, depth first (bound only when useHierarchy is 1).
 layout(set = 0, binding = BINDING_BVH_NODES, std430) readonly buffer BvhNodeBuffer { GpuBvhNode bvhNodes[]; };
 
 #include "camera.glsl"
@@ -64,8 +75,21 @@ vec3 traceRay(Ray ray) {
     }
 }
 
+// Which pixel of its workgroup's 8 x 8 tile an invocation traces. lavapipe runs each 8
+// invocations consecutive in x as one 8-wide SIMD vector (whatever the workgroup shape, as
+// long as its x size is a multiple of 8), so plain x/y would give each vector a row of 8
+// pixels; rearranged, it gets a 4 x 2 block, whose rays stay together longer in the
+// hierarchy: about 5% fewer SIMD traversal steps, and 2-10% faster on lavapipe (README).
+#if WORKGROUP_SIZE_X != 8 || WORKGROUP_SIZE_Y % 2 != 0
+#error "pixelInTile assumes 8-wide workgroups with an even height"
+#endif
+uvec2 pixelInTile(uvec2 local) {
+    return uvec2((local.y % 2u) * 4u + local.x % 4u, (local.y / 2u) * 2u + local.x / 4u);
+}
+
 void main() {
-    uvec2 pixel = params.tile.xy + gl_GlobalInvocationID.xy;
+    uvec2 pixel = params.tile.xy + gl_WorkGroupID.xy * uvec2(WORKGROUP_SIZE_X, WORKGROUP_SIZE_Y) +
+                  pixelInTile(gl_LocalInvocationID.xy);
     if (any(greaterThanEqual(pixel, params.image.xy))) return;
 
     uint samples = max(params.image.z, 1u);

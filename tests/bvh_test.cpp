@@ -28,7 +28,8 @@ Box3 inputBox(const PrimitiveBounds& bounds, std::uint32_t id) {
 }
 
 bool contains(const Box3& outer, const Box3& inner) {
-    return glm::all(glm::lessThanEqual(outer.lo, inner.lo)) && glm::all(glm::lessThanEqual(inner.hi, outer.hi));
+    return glm::all(glm::lessThanEqual(outer.lo, inner.lo)) &&
+           glm::all(glm::lessThanEqual(inner.hi, outer.hi));
 }
 
 void addBox(PrimitiveBounds& bounds, glm::vec3 lo, glm::vec3 hi) {
@@ -77,7 +78,7 @@ Walk walkTree(const Bvh& bvh, const PrimitiveBounds& input) {
     std::vector<int> visits(bvh.nodes.size(), 0);
     // Returns the index just past the subtree, so the layout can be checked.
     std::function<std::uint32_t(std::uint32_t, std::uint32_t)> visit = [&](std::uint32_t index,
-                                                                            std::uint32_t depth) {
+                                                                           std::uint32_t depth) {
         EXPECT_LT(index, bvh.nodes.size());
         if (index >= bvh.nodes.size()) return index;
         ++visits[index];
@@ -85,11 +86,14 @@ Walk walkTree(const Bvh& bvh, const PrimitiveBounds& input) {
         walk.depth = std::max(walk.depth, depth);
         if (isLeaf(node)) {
             ++walk.leaves;
-            std::vector<int>& hits = holdsSpheres(node) ? walk.sphereSlotHits : walk.triangleSlotHits;
-            const std::vector<std::uint32_t>& order = holdsSpheres(node) ? bvh.sphereOrder : bvh.triangleOrder;
+            std::vector<int>& hits =
+                holdsSpheres(node) ? walk.sphereSlotHits : walk.triangleSlotHits;
+            const std::vector<std::uint32_t>& order =
+                holdsSpheres(node) ? bvh.sphereOrder : bvh.triangleOrder;
             const std::uint32_t idBase = holdsSpheres(node) ? 0 : input.sphereCount;
             EXPECT_GT(primitiveCount(node), 0u);
-            for (std::uint32_t slot = firstPrimitive(node); slot < firstPrimitive(node) + primitiveCount(node); ++slot) {
+            for (std::uint32_t slot = firstPrimitive(node);
+                 slot < firstPrimitive(node) + primitiveCount(node); ++slot) {
                 EXPECT_LT(slot, hits.size());
                 if (slot >= hits.size()) break;
                 ++hits[slot];
@@ -103,13 +107,15 @@ Walk walkTree(const Bvh& bvh, const PrimitiveBounds& input) {
         EXPECT_TRUE(right < bvh.nodes.size() && contains(nodeBox(node), nodeBox(bvh.nodes[right])))
             << "node " << index;
         const std::uint32_t afterLeft = visit(left, depth + 1);
-        EXPECT_EQ(afterLeft, right) << "the right child of node " << index << " does not follow its left subtree";
+        EXPECT_EQ(afterLeft, right)
+            << "the right child of node " << index << " does not follow its left subtree";
         return visit(right, depth + 1);
     };
     if (!bvh.nodes.empty()) {
         EXPECT_EQ(visit(0, 0), bvh.nodes.size());
     }
-    for (std::size_t i = 0; i < visits.size(); ++i) EXPECT_EQ(visits[i], 1) << "node " << i;
+    for (std::size_t i = 0; i < visits.size(); ++i)
+        EXPECT_EQ(visits[i], 1) << "node " << i;
     return walk;
 }
 
@@ -120,14 +126,17 @@ bool isPermutation(std::vector<std::uint32_t> values) {
     return true;
 }
 
-void expectWellFormed(const Bvh& bvh, const PrimitiveBounds& input, const BvhSettings& settings = {}) {
+void expectWellFormed(const Bvh& bvh, const PrimitiveBounds& input,
+                      const BvhSettings& settings = {}) {
     ASSERT_EQ(bvh.sphereOrder.size(), input.sphereCount);
     ASSERT_EQ(bvh.triangleOrder.size(), input.size() - input.sphereCount);
     EXPECT_TRUE(isPermutation(bvh.sphereOrder));
     EXPECT_TRUE(isPermutation(bvh.triangleOrder));
     Walk walk = walkTree(bvh, input);
-    for (int hits : walk.sphereSlotHits) EXPECT_EQ(hits, 1);
-    for (int hits : walk.triangleSlotHits) EXPECT_EQ(hits, 1);
+    for (int hits : walk.sphereSlotHits)
+        EXPECT_EQ(hits, 1);
+    for (int hits : walk.triangleSlotHits)
+        EXPECT_EQ(hits, 1);
     EXPECT_EQ(walk.depth, bvh.depth);
     EXPECT_LE(walk.depth, settings.maxDepth);
 }
@@ -136,16 +145,23 @@ TEST(Bvh, EveryPrimitiveInExactlyOneLeafAndEveryBoxBoundsItsContents) {
     PrimitiveBounds input = randomScene(300, 5000);
     Bvh bvh = buildBvh(input);
     expectWellFormed(bvh, input);
-    EXPECT_GT(bvh.nodes.size(), 2 * 5300 / 4 - 1); // at most maxLeafSize per leaf, so enough leaves
+    Walk walk = walkTree(bvh, input);
+    EXPECT_GE(walk.leaves, 5300 / BvhSettings{}.maxLeafSize); // no leaf above maxLeafSize
+    EXPECT_EQ(bvh.nodes.size(), 2 * walk.leaves - 1);         // a binary tree
 }
 
 TEST(Bvh, LeavesStayWithinTheLeafSizeUnlessForced) {
     PrimitiveBounds input = randomScene(0, 2000);
-    Bvh bvh = buildBvh(input);
-    for (const gpu::GpuBvhNode& node : bvh.nodes)
-        if (isLeaf(node)) {
-            EXPECT_LE(primitiveCount(node), 4u);
-        }
+    for (std::uint32_t maxLeafSize : {1u, 4u, 8u}) {
+        BvhSettings settings;
+        settings.maxLeafSize = maxLeafSize;
+        Bvh bvh = buildBvh(input, settings);
+        expectWellFormed(bvh, input, settings);
+        for (const gpu::GpuBvhNode& node : bvh.nodes)
+            if (isLeaf(node)) {
+                EXPECT_LE(primitiveCount(node), maxLeafSize);
+            }
+    }
 }
 
 TEST(Bvh, EmptyAndSingleInputs) {
@@ -162,8 +178,8 @@ TEST(Bvh, EmptyAndSingleInputs) {
 TEST(Bvh, MixedSmallRangeIsSplitIntoOneLeafPerKind) {
     PrimitiveBounds input;
     input.sphereCount = 1;
-    addBox(input, glm::vec3(0), glm::vec3(1));          // a sphere
-    addBox(input, glm::vec3(0.5f), glm::vec3(1.5f));    // a triangle overlapping it
+    addBox(input, glm::vec3(0), glm::vec3(1));       // a sphere
+    addBox(input, glm::vec3(0.5f), glm::vec3(1.5f)); // a triangle overlapping it
     Bvh bvh = buildBvh(input);
     expectWellFormed(bvh, input);
     ASSERT_EQ(bvh.nodes.size(), 3u);
@@ -172,10 +188,12 @@ TEST(Bvh, MixedSmallRangeIsSplitIntoOneLeafPerKind) {
 
 TEST(Bvh, IdenticalTrianglesStayWithinTheStackDepth) {
     PrimitiveBounds input;
-    for (int i = 0; i < 10000; ++i) addBox(input, glm::vec3(-1, -1, -5), glm::vec3(1, 1, -5));
+    for (int i = 0; i < 10000; ++i)
+        addBox(input, glm::vec3(-1, -1, -5), glm::vec3(1, 1, -5));
     Bvh bvh = buildBvh(input);
     expectWellFormed(bvh, input);
-    EXPECT_LE(bvh.depth, 13u); // balanced: ceil(log2(10000 / 4)) levels
+    // Balanced: halving 10000 down to leaves of 8 takes ceil(log2(1250)) = 11 levels.
+    EXPECT_LE(bvh.depth, 11u);
 }
 
 TEST(Bvh, GeometricallySpacedPrimitivesStayWithinTheDepthLimit) {
@@ -194,7 +212,8 @@ TEST(Bvh, GeometricallySpacedPrimitivesStayWithinTheDepthLimit) {
         EXPECT_LE(bvh.depth, maxDepth);
     }
     BvhSettings tooShallow;
-    tooShallow.maxDepth = 5; // 2000 primitives in leaves of 4 need 9 levels
+    tooShallow.maxDepth =
+        5; // 2000 primitives in leaves of 8 need 8 levels, and one to split by kind
     EXPECT_THROW(buildBvh(input, tooShallow), std::invalid_argument);
 }
 
@@ -223,7 +242,8 @@ TEST(Bvh, SahSeparatesTwoClusters) {
 TEST(Bvh, SahMakesALeafWhenSplittingDoesNotPay) {
     // Four boxes that all overlap almost entirely: splitting saves nothing.
     PrimitiveBounds input;
-    for (int i = 0; i < 4; ++i) addBox(input, glm::vec3(0.001f * float(i)), glm::vec3(1.0f + 0.001f * float(i)));
+    for (int i = 0; i < 4; ++i)
+        addBox(input, glm::vec3(0.001f * float(i)), glm::vec3(1.0f + 0.001f * float(i)));
     Bvh bvh = buildBvh(input);
     ASSERT_EQ(bvh.nodes.size(), 1u);
     EXPECT_EQ(primitiveCount(bvh.nodes[0]), 4u);
@@ -233,12 +253,16 @@ TEST(Bvh, TwoHundredThousandTrianglesBuild) {
     PrimitiveBounds input = randomScene(0, 200000);
     auto start = std::chrono::steady_clock::now();
     Bvh bvh = buildBvh(input);
-    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    std::printf("200k triangles: %zu nodes, depth %u, built in %.1f ms\n", bvh.nodes.size(), bvh.depth, ms);
+    double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::printf("200k triangles: %zu nodes, depth %u, built in %.1f ms\n", bvh.nodes.size(),
+                bvh.depth, ms);
     expectWellFormed(bvh, input);
 }
 
-Vertex vertexAt(glm::dvec3 position) { return {position, glm::dvec3(0, 0, 1), Material{glm::dvec3(0.5), glm::dvec3(0), 1}}; }
+Vertex vertexAt(glm::dvec3 position) {
+    return {position, glm::dvec3(0, 0, 1), Material{glm::dvec3(0.5), glm::dvec3(0), 1}};
+}
 
 TEST(LeafOrder, KeepsEveryPrimitiveAndItsMaterialAndLeavesIndexTheReorderedArrays) {
     Scene scene;
@@ -249,7 +273,8 @@ TEST(LeafOrder, KeepsEveryPrimitiveAndItsMaterialAndLeavesIndexTheReorderedArray
     }
     for (int i = 0; i < 200; ++i) {
         glm::dvec3 a(random.point(20.0f));
-        scene.triangles.push_back({{vertexAt(a), vertexAt(a + glm::dvec3(1, 0, 0)), vertexAt(a + glm::dvec3(0, 1, 0))}});
+        scene.triangles.push_back(
+            {{vertexAt(a), vertexAt(a + glm::dvec3(1, 0, 0)), vertexAt(a + glm::dvec3(0, 1, 0))}});
     }
     const PackedScene original = packScene(scene);
     PackedScene packed = original;
@@ -262,14 +287,17 @@ TEST(LeafOrder, KeepsEveryPrimitiveAndItsMaterialAndLeavesIndexTheReorderedArray
     }
     for (std::size_t slot = 0; slot < bvh.triangleOrder.size(); ++slot)
         for (int k = 0; k < 3; ++k)
-            EXPECT_EQ(packed.triangleVertices[3 * slot + k], original.triangleVertices[3 * bvh.triangleOrder[slot] + k]);
+            EXPECT_EQ(packed.triangleVertices[3 * slot + k],
+                      original.triangleVertices[3 * bvh.triangleOrder[slot] + k]);
     EXPECT_EQ(packed.vertexPositions, original.vertexPositions); // vertices stay shared, untouched
     // The reordered scene's own boxes are inside the leaves that now index them.
     const PrimitiveBounds reordered = primitiveBounds(packed);
     for (const gpu::GpuBvhNode& node : bvh.nodes) {
         if (!isLeaf(node)) continue;
-        for (std::uint32_t slot = firstPrimitive(node); slot < firstPrimitive(node) + primitiveCount(node); ++slot)
-            EXPECT_TRUE(contains(nodeBox(node), inputBox(reordered, holdsSpheres(node) ? slot : 40 + slot)));
+        for (std::uint32_t slot = firstPrimitive(node);
+             slot < firstPrimitive(node) + primitiveCount(node); ++slot)
+            EXPECT_TRUE(contains(nodeBox(node),
+                                 inputBox(reordered, holdsSpheres(node) ? slot : 40 + slot)));
     }
 }
 

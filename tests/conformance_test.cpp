@@ -43,7 +43,8 @@ std::vector<ConformanceCase> allCases() {
     std::vector<ConformanceCase> cases;
     for (const char* folder : {PROJECT_SCENES_DIR, SHARED_SCENES_DIR})
         for (const auto& scene : sceneFilesIn(folder))
-            for (int depth : {0, 5}) cases.push_back({scene, depth});
+            for (int depth : {0, 5})
+                cases.push_back({scene, depth});
     return cases;
 }
 
@@ -58,16 +59,18 @@ std::string caseName(const testing::TestParamInfo<ConformanceCase>& info) {
 
 // Renders scene on the GPU with --accel accel (and any extra flags) into dir; fails the
 // test and returns an empty image when the program fails.
-Image8 renderGpu(const std::filesystem::path& scene, const std::string& accel, const std::filesystem::path& dir,
-                 std::vector<std::string> extra) {
+Image8 renderGpu(const std::filesystem::path& scene, const std::string& accel,
+                 const std::filesystem::path& dir, std::vector<std::string> extra) {
     std::filesystem::path png = dir / ("gpu-" + accel + ".png");
-    std::vector<std::string> args = {scene.string(), "-o", png.string(), "--validate", "--accel", accel};
+    std::vector<std::string> args = {scene.string(), "-o",      png.string(),
+                                     "--validate",   "--accel", accel};
     args.insert(args.end(), extra.begin(), extra.end());
     ProcessResult run = runRaytracer(args);
     EXPECT_FALSE(run.timedOut);
     EXPECT_EQ(run.exitCode, 0) << run.err;
     EXPECT_FALSE(hasValidationMessage(run)) << run.err;
-    EXPECT_NE(run.err.find(accel == "bvh" ? "Acceleration: BVH" : "Acceleration: none"), std::string::npos)
+    EXPECT_NE(run.err.find(accel == "bvh" ? "Acceleration: BVH" : "Acceleration: none"),
+              std::string::npos)
         << run.err;
     if (run.exitCode != 0) return {};
     return readPng(png);
@@ -76,13 +79,14 @@ Image8 renderGpu(const std::filesystem::path& scene, const std::string& accel, c
 long differingPixels(const Image8& a, const Image8& b) {
     long count = 0;
     for (std::size_t i = 0; i + 3 < a.rgba.size() && i + 3 < b.rgba.size(); i += 4)
-        count += a.rgba[i] != b.rgba[i] || a.rgba[i + 1] != b.rgba[i + 1] || a.rgba[i + 2] != b.rgba[i + 2];
+        count += a.rgba[i] != b.rgba[i] || a.rgba[i + 1] != b.rgba[i + 1] ||
+                 a.rgba[i + 2] != b.rgba[i + 2];
     return count;
 }
 
 // Compares with the reference under the conformance tolerance, keeping images on failure.
-void expectMatchesReference(const Image8& gpu, const Image8& reference, const std::filesystem::path& dir,
-                            const std::string& label) {
+void expectMatchesReference(const Image8& gpu, const Image8& reference,
+                            const std::filesystem::path& dir, const std::string& label) {
     ImageComparison comparison = compareImages(gpu, reference, kTolerance);
     std::printf("conformance %s: %s\n", label.c_str(), describe(comparison).c_str());
     if (comparison.fractionWithinTolerance < kMinimumMatch) {
@@ -97,8 +101,9 @@ class Conformance : public testing::TestWithParam<ConformanceCase> {};
 TEST_P(Conformance, GpuMatchesCpuReferenceWithAndWithoutHierarchy) {
     const ConformanceCase& test = GetParam();
     std::filesystem::path dir = freshOutputDir("conformance/" + caseName({test, 0}));
-    std::vector<std::string> size = {"--width", std::to_string(kWidth), "--height", std::to_string(kHeight),
-                                     "--depth", std::to_string(test.depth)};
+    std::vector<std::string> size = {"--width",  std::to_string(kWidth),
+                                     "--height", std::to_string(kHeight),
+                                     "--depth",  std::to_string(test.depth)};
     Image8 bvh = renderGpu(test.scene, "bvh", dir, size);
     Image8 none = renderGpu(test.scene, "none", dir, size);
     if (HasFailure()) return;
@@ -111,7 +116,8 @@ TEST_P(Conformance, GpuMatchesCpuReferenceWithAndWithoutHierarchy) {
     std::string label = test.scene.filename().string() + " depth " + std::to_string(test.depth);
     expectMatchesReference(bvh, reference, dir, label + " bvh");
     expectMatchesReference(none, reference, dir, label + " none");
-    EXPECT_EQ(differingPixels(bvh, none), 0) << "the hierarchy changed pixels; images kept in " << dir;
+    EXPECT_EQ(differingPixels(bvh, none), 0)
+        << "the hierarchy changed pixels; images kept in " << dir;
     if (!HasFailure()) std::filesystem::remove_all(dir);
 }
 
@@ -136,13 +142,14 @@ struct MeshSceneWriter {
         glm::dvec3 n = glm::cross(b - a, c - a);
         objects << "triangle\n";
         for (glm::dvec3 p : {a, b, c})
-            objects << "pos: " << number(p.x) << ' ' << number(p.y) << ' ' << number(p.z) << "\nnor: "
-                    << number(n.x) << ' ' << number(n.y) << ' ' << number(n.z)
+            objects << "pos: " << number(p.x) << ' ' << number(p.y) << ' ' << number(p.z)
+                    << "\nnor: " << number(n.x) << ' ' << number(n.y) << ' ' << number(n.z)
                     << "\ndif: 0.6 0.6 0.6\nspe: 0 0 0\nshi: 1\n";
         ++count;
     }
     std::string text() const {
-        return std::to_string(count + 1) + "\namb: 0.2 0.2 0.2\nlight\npos: 0 0 0\ncol: 0.7 0.7 0.7\n" + objects.str();
+        return std::to_string(count + 1) +
+               "\namb: 0.2 0.2 0.2\nlight\npos: 0 0 0\ncol: 0.7 0.7 0.7\n" + objects.str();
     }
 };
 
@@ -171,7 +178,8 @@ void addSubdividedBox(MeshSceneWriter& scene, glm::dvec3 lo, glm::dvec3 hi) {
 }
 
 // A UV sphere of rings x segments quads (fans at the poles), vertices computed once.
-void addTessellatedSphere(MeshSceneWriter& scene, glm::dvec3 centre, double radius, int rings, int segments) {
+void addTessellatedSphere(MeshSceneWriter& scene, glm::dvec3 centre, double radius, int rings,
+                          int segments) {
     auto at = [&](int ring, int segment) {
         double theta = M_PI * ring / rings, phi = 2 * M_PI * (segment % segments) / segments;
         if (ring == 0) return centre + glm::dvec3(0, radius, 0);
@@ -181,8 +189,8 @@ void addTessellatedSphere(MeshSceneWriter& scene, glm::dvec3 centre, double radi
     };
     for (int ring = 0; ring < rings; ++ring)
         for (int segment = 0; segment < segments; ++segment) {
-            glm::dvec3 a = at(ring, segment), b = at(ring, segment + 1), c = at(ring + 1, segment + 1),
-                       d = at(ring + 1, segment);
+            glm::dvec3 a = at(ring, segment), b = at(ring, segment + 1),
+                       c = at(ring + 1, segment + 1), d = at(ring + 1, segment);
             if (ring != 0) scene.triangle(a, b, c);
             if (ring != rings - 1) scene.triangle(a, c, d);
         }
@@ -202,7 +210,8 @@ long cracks(const Image8& gpu, const Image8& reference, bool interiorOnly) {
         for (int x = 1; x + 1 < reference.width; ++x) {
             bool covered = !isBackground(reference, x, y);
             for (int dy = -1; interiorOnly && dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) covered = covered && !isBackground(reference, x + dx, y + dy);
+                for (int dx = -1; dx <= 1; ++dx)
+                    covered = covered && !isBackground(reference, x + dx, y + dy);
             count += covered && isBackground(gpu, x, y);
         }
     return count;
@@ -213,8 +222,9 @@ void expectWatertight(const std::string& name, const std::string& sceneText, int
     std::filesystem::path dir = freshOutputDir("watertight/" + name);
     std::filesystem::path scenePath = dir / (name + ".scene");
     writeTextFile(scenePath, sceneText);
-    std::vector<std::string> flags = {"--width", std::to_string(width), "--height", std::to_string(height),
-                                      "--depth", "0", "--background", "0,0,0"};
+    std::vector<std::string> flags = {
+        "--width", std::to_string(width), "--height", std::to_string(height), "--depth",
+        "0",       "--background",        "0,0,0"};
     ReferenceSettings settings;
     settings.width = width;
     settings.height = height;
@@ -223,14 +233,15 @@ void expectWatertight(const std::string& name, const std::string& sceneText, int
     Image8 reference = renderReference(loadScene(scenePath), settings);
     long covered = 0;
     for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) covered += !isBackground(reference, x, y);
+        for (int x = 0; x < width; ++x)
+            covered += !isBackground(reference, x, y);
     ASSERT_GT(covered, width * height / 10) << "the mesh should fill a good part of the image";
     for (const std::string accel : {"bvh", "none"}) {
         Image8 gpu = renderGpu(scenePath, accel, dir, flags);
         if (testing::Test::HasFailure()) return;
         long found = cracks(gpu, reference, interiorOnly);
-        std::printf("watertight %s %s: %ld background pixels inside the mesh of %ld\n", name.c_str(),
-                    accel.c_str(), found, covered);
+        std::printf("watertight %s %s: %ld background pixels inside the mesh of %ld\n",
+                    name.c_str(), accel.c_str(), found, covered);
         EXPECT_EQ(found, 0) << accel << ": cracks; images kept in " << dir;
         expectMatchesReference(gpu, reference, dir, name + " " + accel);
     }
