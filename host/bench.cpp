@@ -1,5 +1,7 @@
 #include "bench.h"
 
+#include "bench_json.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
@@ -12,33 +14,6 @@ namespace {
 
 // lavapipe compiles the shader lazily on the first dispatches; these are not timed.
 constexpr int kWarmUpFrames = 2;
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    std::size_t middle = values.size() / 2;
-    return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
-}
-
-std::string jsonString(const std::string& text) {
-    std::string quoted = "\"";
-    for (char c : text) {
-        if (c == '"' || c == '\\') quoted += '\\';
-        if (static_cast<unsigned char>(c) < 0x20) {
-            char escaped[8];
-            std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
-            quoted += escaped;
-            continue;
-        }
-        quoted += c;
-    }
-    return quoted + "\"";
-}
-
-std::string jsonNumber(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3f", value);
-    return text;
-}
 
 // The process's start time in seconds since boot (field 22 of /proc/self/stat), or a
 // negative value if it cannot be read.
