@@ -45,6 +45,8 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
                                 glm::vec3(options.background), options.fovDegrees,
                                 options.acceleration};
         settings.cacheDirectory = userCacheDirectory(options.useCache);
+        settings.camera = options.camera;
+        settings.shaderDirectory = options.shaderDirectory;
         createRenderer(renderer, context, scene, settings);
         createHeadlessTarget(target, context, renderer, options.tileSide);
         if (options.benchFrames > 0) {
@@ -74,6 +76,12 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
         std::cout << usageText();
         return kSuccess;
     }
+    if (!options.dumpShadersTo.empty()) {
+        writeEmbeddedShaders(options.dumpShadersTo);
+        std::cerr << "Wrote the shader sources to " << options.dumpShadersTo.string()
+                  << "; edit them there and run with --shader-dir " << options.dumpShadersTo.string() << '\n';
+        if (options.scenePath.empty()) return kSuccess;
+    }
     const auto parseStart = std::chrono::steady_clock::now();
     Scene scene = loadScene(options.scenePath);
     startup.parseMs =
@@ -85,6 +93,8 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
         if (options.forceWindow)
             throw std::runtime_error("--window was given, but no window can be opened: " +
                                      windowUnavailableReason());
+        if (options.benchWindowFrames > 0)
+            throw std::runtime_error("--bench-window needs a display: " + windowUnavailableReason());
         options.outputPath = options.scenePath.stem().string() + ".png";
         std::cerr << "No display: rendering headless to " << options.outputPath.string() << '\n';
         headless = true;

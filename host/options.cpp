@@ -40,6 +40,20 @@ glm::dvec3 parseColor(const std::string& flag, const std::string& text) {
     return {channels[0], channels[1], channels[2]};
 }
 
+// Three numbers X,Y,Z of any sign (a point or a direction).
+glm::dvec3 parseVector(const std::string& flag, const std::string& text) {
+    std::vector<double> values;
+    std::size_t start = 0;
+    while (true) {
+        std::size_t comma = text.find(',', start);
+        values.push_back(parseReal(flag, text.substr(start, comma - start)));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    if (values.size() != 3) throw UsageError(flag + " expects three numbers X,Y,Z, got '" + text + "'");
+    return {values[0], values[1], values[2]};
+}
+
 } // namespace
 
 std::string usageText() {
@@ -55,6 +69,9 @@ std::string usageText() {
            " (default 5)\n"
            "  --background R,G,B    colour of rays that hit nothing (default 1,1,1)\n"
            "  --fov DEG             vertical field of view in degrees (default 60)\n"
+           "  --camera-pos X,Y,Z    eye position (default 0,0,0, the SPEC camera)\n"
+           "  --camera-target X,Y,Z point looked at (default 0,0,-1 from the eye: down -z)\n"
+           "  --camera-up X,Y,Z     up direction (default 0,1,0)\n"
            "  --bench N             render N frames headless after a warm-up, print JSON timings\n"
            "  --device NAME|INDEX   use this Vulkan device (default: a real GPU before a CPU one)\n"
            "  --accel auto|bvh|none  bounding volume hierarchy, or test every primitive (default\n"
@@ -63,9 +80,19 @@ std::string usageText() {
            "  --no-cache            neither read nor write the shader cache ($XDG_CACHE_HOME/raytracer)\n"
            "  --progress            report progress on stderr even for a render under a second\n"
            "  --window              show a window or fail; never fall back to a headless PNG\n"
+           "  --shader-dir DIR      compile the kernel from DIR's sources (trace.comp and its\n"
+           "                        includes); the window recompiles when one is saved\n"
+           "  --dump-shaders DIR    write the built-in shader sources to DIR and exit\n"
+           "  --bench-window N      window: time N progressive frames, print frames per second\n"
            "  -h, --help            show this help\n"
            "\n"
-           "Window keys: Esc or Q quits.\n";
+           "The window refines progressively, one or more samples per pixel per frame, up to\n"
+           "--spp N if given (then it shows exactly the headless --spp N image), else 1024.\n"
+           "Saving the scene file (or a --shader-dir source) re-renders it.\n"
+           "Window keys: Esc or Q quits; R reloads scene and shaders; P writes a screenshot\n"
+           "PNG (once refinement is done); V toggles vsync; C or Home resets the camera.\n"
+           "Camera: drag with the left button to orbit, wheel to dolly, drag with the right\n"
+           "button to look around; W/A/S/D move, Space/Left Shift go up/down.\n";
 }
 
 Options parseOptions(int argc, const char* const* argv) {
@@ -88,6 +115,7 @@ Options parseOptions(int argc, const char* const* argv) {
             options.height = parseCount(arg, value(), 1, 16384);
         } else if (arg == "--spp") {
             options.samplesPerPixel = parseCount(arg, value(), 1, 65536);
+            options.samplesGiven = true;
         } else if (arg == "--depth") {
             options.depth = parseCount(arg, value(), 0, MAX_DEPTH);
         } else if (arg == "--background") {
@@ -96,6 +124,24 @@ Options parseOptions(int argc, const char* const* argv) {
             options.fovDegrees = parseReal(arg, value());
             if (!(options.fovDegrees > 0.0 && options.fovDegrees < 180.0))
                 throw UsageError("--fov expects degrees strictly between 0 and 180");
+        } else if (arg == "--camera-pos") {
+            options.camera.position = parseVector(arg, value());
+        } else if (arg == "--camera-target") {
+            options.camera.target = parseVector(arg, value());
+            options.cameraTargetGiven = true;
+        } else if (arg == "--camera-up") {
+            options.camera.up = parseVector(arg, value());
+        } else if (arg == "--shader-dir") {
+            options.shaderDirectory = value();
+            std::error_code error;
+            if (!std::filesystem::is_regular_file(options.shaderDirectory / "trace.comp", error))
+                throw UsageError("--shader-dir expects a folder holding trace.comp (see --dump-shaders), got '" +
+                                 options.shaderDirectory.string() + "'");
+        } else if (arg == "--dump-shaders") {
+            options.dumpShadersTo = value();
+            if (options.dumpShadersTo.empty()) throw UsageError("--dump-shaders expects a folder");
+        } else if (arg == "--bench-window") {
+            options.benchWindowFrames = parseCount(arg, value(), 1, 100000);
         } else if (arg == "--bench") {
             options.benchFrames = parseCount(arg, value(), 1, 100000);
         } else if (arg == "--device") {
@@ -127,9 +173,15 @@ Options parseOptions(int argc, const char* const* argv) {
                              "' and '" + arg + "'");
         }
     }
-    if (options.scenePath.empty() && !options.showHelp)
+    // A target given without a position looks from the origin; a position alone keeps
+    // looking down -z from there.
+    if (!options.cameraTargetGiven) options.camera.target = options.camera.position + glm::dvec3(0.0, 0.0, -1.0);
+    if (std::string problem = cameraPoseProblem(options.camera); !problem.empty()) throw UsageError(problem);
+    if (options.scenePath.empty() && !options.showHelp && options.dumpShadersTo.empty())
         throw UsageError("no scene file given (see --help)");
     if (options.forceWindow && (!options.outputPath.empty() || options.benchFrames > 0))
         throw UsageError("--window cannot be combined with -o or --bench, which render headless");
+    if (options.benchWindowFrames > 0 && (!options.outputPath.empty() || options.benchFrames > 0))
+        throw UsageError("--bench-window cannot be combined with -o or --bench, which render headless");
     return options;
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "bvh.h"
+#include "camera_controller.h"
 
 #include <glm/glm.hpp>
 
@@ -29,6 +30,12 @@ struct Options {
     bool progress = false;      // --progress: report progress even for a short render
     bool forceWindow = false;   // --window: a window or an error, never the headless fallback
     bool redrawContinuously = false; // --redraw-continuously (hidden, for the soak test)
+    bool samplesGiven = false;  // --spp was given: the window refines up to it, not to its cap
+    CameraPose camera;          // --camera-pos, --camera-target, --camera-up (default: SPEC's)
+    bool cameraTargetGiven = false; // else the window may move the orbit pivot along the view
+    std::filesystem::path shaderDirectory; // --shader-dir: compile (and watch) these sources
+    std::filesystem::path dumpShadersTo;   // --dump-shaders DIR: write the embedded sources, exit
+    std::uint32_t benchWindowFrames = 0;   // --bench-window N: time N progressive frames, exit
 };
 
 // A command line that does not make sense; what() is the message for the user.

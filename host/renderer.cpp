@@ -1,5 +1,6 @@
 #include "renderer.h"
 
+#include "shader_compiler.h"
 #include "shared.h"
 #include "vk_check.h"
 
@@ -7,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <regex>
 
 namespace {
 
@@ -31,10 +33,11 @@ void createDescriptors(Renderer& renderer, const Context& context) {
     allocateInfo.pSetLayouts = &renderer.pipeline.setLayout;
     VK_CHECK(vkAllocateDescriptorSets(context.device, &allocateInfo, &renderer.descriptorSet));
 
-    // The scene's ranges never change; the output image is written by resizeOutput.
+    // The scene's ranges never change; the output image and the running sum are written by
+    // resizeOutput.
     std::vector<VkWriteDescriptorSet> writes;
     for (std::uint32_t binding = 0; binding < BINDING_COUNT; ++binding) {
-        if (binding == BINDING_OUTPUT_IMAGE) continue;
+        if (binding == BINDING_OUTPUT_IMAGE || binding == BINDING_ACCUMULATION) continue;
         VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         write.dstSet = renderer.descriptorSet;
         write.dstBinding = binding;
@@ -46,7 +49,8 @@ void createDescriptors(Renderer& renderer, const Context& context) {
     vkUpdateDescriptorSets(context.device, static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
 }
 
-gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t tileX, std::uint32_t tileY) {
+gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t tileX, std::uint32_t tileY,
+                                SampleRange samples) {
     const RenderSettings& settings = renderer.settings;
     const double tanHalfFov = std::tan(settings.fovDegrees * 0.5 * M_PI / 180.0);
     const double aspect = double(settings.width) / double(settings.height);
@@ -54,11 +58,15 @@ gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t tileX, s
     params.background = glm::vec4(settings.background, 0.0f);
     params.ambient = renderer.scene.ambient;
     params.camera = glm::vec4(float(aspect * tanHalfFov), float(tanHalfFov), 0.0f, 0.0f);
+    const glm::dquat orientation = cameraOrientation(settings.camera);
+    params.cameraOrigin = glm::vec4(glm::vec3(settings.camera.position), 0.0f);
+    params.cameraOrientation =
+        glm::vec4(float(orientation.x), float(orientation.y), float(orientation.z), float(orientation.w));
     params.image = glm::uvec4(settings.width, settings.height, settings.samplesPerPixel,
                               std::min<std::uint32_t>(settings.depth, MAX_DEPTH));
     params.counts = glm::uvec4(renderer.scene.sphereCount, renderer.scene.triangleCount,
                                renderer.scene.lightCount, 0);
-    params.tile = glm::uvec4(tileX, tileY, 0, 0);
+    params.tile = glm::uvec4(tileX, tileY, samples.first, samples.count);
     return params;
 }
 
@@ -93,7 +101,24 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
     specialization.useHierarchy = renderer.scene.bvhNodeCount > 0;
     specialization.hasSpheres = renderer.scene.sphereCount > 0;
     specialization.hasTriangles = renderer.scene.triangleCount > 0;
-    renderer.pipeline = loadTracePipeline(context, settings.cacheDirectory, specialization);
+    if (settings.shaderDirectory.empty()) {
+        renderer.pipeline = loadTracePipeline(context, settings.cacheDirectory, specialization);
+    } else {
+        // The user's sources change under us, so neither SPIR-V nor the driver's cache is kept.
+        std::vector<std::uint32_t> spirv;
+        try {
+            spirv = compileComputeShader("trace.comp", directoryShaderLoader(settings.shaderDirectory));
+        } catch (const ShaderCompileError& error) {
+            // glslang names files as included ("ERROR: shade.glsl:12: ..."); with the folder
+            // in front, an editor or terminal can jump to the line.
+            const std::regex located("(ERROR|WARNING): ([A-Za-z0-9_.-]+):([0-9]+):");
+            const std::string log = std::regex_replace(
+                error.what(), located, "$1: " + (settings.shaderDirectory / "").string() + "$2:$3:");
+            throw ShaderCompileError("the kernel in " + settings.shaderDirectory.string() +
+                                     " does not compile (--shader-dir):\n" + log);
+        }
+        renderer.pipeline = createTracePipeline(context, spirv, VK_NULL_HANDLE, specialization);
+    }
     const std::size_t primitives = renderer.scene.sphereCount + renderer.scene.triangleCount;
     if (primitives > 0)
         std::fprintf(stderr, "Scene memory: %llu bytes, %.1f bytes per primitive\n",
@@ -125,7 +150,24 @@ void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t widt
     write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
     write.pImageInfo = &imageInfo;
     vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
+
+    // Its contents never matter: the first dispatch of a progressive run writes before
+    // it reads, and one-pass dispatches never touch it.
+    destroyBuffer(context, renderer.accumulation);
+    const VkDeviceSize accumulationBytes =
+        renderer.settings.progressive ? VkDeviceSize(width) * height * sizeof(glm::vec4) : sizeof(glm::vec4);
+    const std::vector<std::uint8_t> zeros(accumulationBytes, 0);
+    renderer.accumulation =
+        createDeviceBuffer(context, zeros.data(), accumulationBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    VkDescriptorBufferInfo bufferInfo{renderer.accumulation.buffer, 0, VK_WHOLE_SIZE};
+    write.dstBinding = BINDING_ACCUMULATION;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    write.pImageInfo = nullptr;
+    write.pBufferInfo = &bufferInfo;
+    vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
 }
+
+void setCamera(Renderer& renderer, const CameraPose& camera) { renderer.settings.camera = camera; }
 
 void recordTraceBegin(const Renderer& renderer, VkCommandBuffer commands) {
     // Wait for the previous frame's copy or blit to finish reading before writing.
@@ -137,7 +179,10 @@ void recordTraceBegin(const Renderer& renderer, VkCommandBuffer commands) {
                     VK_ACCESS_SHADER_WRITE_BIT);
 }
 
-void recordTraceRegion(const Renderer& renderer, VkCommandBuffer commands, const TraceRegion& region) {
+namespace {
+
+void recordRegion(const Renderer& renderer, VkCommandBuffer commands, const TraceRegion& region,
+                  SampleRange samples) {
     if (renderer.timestampPool) {
         vkCmdResetQueryPool(commands, renderer.timestampPool, 0, 2);
         vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, renderer.timestampPool, 0);
@@ -149,7 +194,7 @@ void recordTraceRegion(const Renderer& renderer, VkCommandBuffer commands, const
     const std::uint32_t right = region.x + region.width, bottom = region.y + region.height;
     for (std::uint32_t tileY = region.y; tileY < bottom; tileY += kTileSize) {
         for (std::uint32_t tileX = region.x; tileX < right; tileX += kTileSize) {
-            gpu::GpuFrameParams params = frameParams(renderer, tileX, tileY);
+            gpu::GpuFrameParams params = frameParams(renderer, tileX, tileY, samples);
             vkCmdPushConstants(commands, renderer.pipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0,
                                sizeof(params), &params);
             std::uint32_t tileWidth = std::min(kTileSize, right - tileX);
@@ -162,6 +207,12 @@ void recordTraceRegion(const Renderer& renderer, VkCommandBuffer commands, const
         vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, renderer.timestampPool, 1);
 }
 
+} // namespace
+
+void recordTraceRegion(const Renderer& renderer, VkCommandBuffer commands, const TraceRegion& region) {
+    recordRegion(renderer, commands, region, {});
+}
+
 void recordTraceEnd(const Renderer& renderer, VkCommandBuffer commands) {
     // Make the kernel's writes, from this and earlier submissions, visible to the copy
     // or blit that follows.
@@ -170,9 +221,17 @@ void recordTraceEnd(const Renderer& renderer, VkCommandBuffer commands) {
                     VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
 }
 
-void recordTrace(const Renderer& renderer, VkCommandBuffer commands) {
+void recordTrace(const Renderer& renderer, VkCommandBuffer commands, SampleRange samples) {
     recordTraceBegin(renderer, commands);
-    recordTraceRegion(renderer, commands, {0, 0, renderer.outputImage.width, renderer.outputImage.height});
+    if (samples.count > 0) {
+        // The running sum written by the previous frame's dispatches is read by this one's.
+        VkMemoryBarrier sum{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+        sum.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+        sum.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+        vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                             0, 1, &sum, 0, nullptr, 0, nullptr);
+    }
+    recordRegion(renderer, commands, {0, 0, renderer.outputImage.width, renderer.outputImage.height}, samples);
     recordTraceEnd(renderer, commands);
 }
 
@@ -188,6 +247,7 @@ double lastTraceGpuMilliseconds(const Renderer& renderer, const Context& context
 void destroyRenderer(Renderer& renderer, const Context& context) {
     if (context.device) vkDeviceWaitIdle(context.device);
     destroyImage(context, renderer.outputImage);
+    destroyBuffer(context, renderer.accumulation);
     if (renderer.timestampPool) vkDestroyQueryPool(context.device, renderer.timestampPool, nullptr);
     if (renderer.descriptorPool) vkDestroyDescriptorPool(context.device, renderer.descriptorPool, nullptr);
     destroyGpuScene(context, renderer.scene);

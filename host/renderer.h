@@ -2,6 +2,7 @@
 // the window: both trace into the same RGBA8 UNORM image with the same kernel.
 #pragma once
 
+#include "camera_controller.h"
 #include "context.h"
 #include "pipeline.h"
 #include "resources.h"
@@ -23,6 +24,17 @@ struct RenderSettings {
     double fovDegrees = 60.0;
     Acceleration acceleration = Acceleration::Auto; // --accel: hierarchy or every primitive
     std::filesystem::path cacheDirectory; // shader and pipeline cache; empty: none (--no-cache)
+    CameraPose camera;                    // the SPEC camera unless --camera-* moved it
+    std::filesystem::path shaderDirectory; // --shader-dir: compile from here, uncached; empty: embedded
+    bool progressive = false; // the window: keep a per-pixel running sum (BINDING_ACCUMULATION)
+};
+
+// The samples one dispatch adds (GpuFrameParams.tile.zw): count 0 traces all of
+// samplesPerPixel in one pass; otherwise samples first..first+count-1 are added to the
+// running sum (RenderSettings::progressive), first 0 starting it afresh.
+struct SampleRange {
+    std::uint32_t first = 0;
+    std::uint32_t count = 0;
 };
 
 struct Renderer {
@@ -33,21 +45,30 @@ struct Renderer {
     // The kernel's output: written in VK_IMAGE_LAYOUT_GENERAL by the compute
     // shader, then read in TRANSFER_SRC_OPTIMAL by a copy (headless) or a blit (window).
     Image outputImage;
+    // vec4 per pixel of outputImage: the running sum of the progressive view, in
+    // VK_ACCESS_SHADER_READ/WRITE between dispatches; one vec4 when not progressive.
+    Buffer accumulation;
     VkQueryPool timestampPool = VK_NULL_HANDLE; // two timestamps around the trace
     RenderSettings settings;
 };
 
-// Compiles the kernel, uploads the scene and creates the output image.
+// Compiles the kernel, uploads the scene and creates the output image. A shader that does
+// not compile throws ShaderCompileError (host/shader_compiler.h); the caller destroys
+// the partly created renderer.
 void createRenderer(Renderer& renderer, const Context& context, const Scene& scene,
                     const RenderSettings& settings);
 
 // Recreates the output image at a new size (the window was resized).
 void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t width, std::uint32_t height);
 
-// Records the whole frame's trace in one command buffer (the window). Afterwards the
-// output image is ready to be read by a transfer command (copy or blit) in
+// Records the whole frame's trace in one command buffer (the window): all samples, or
+// with samples.count > 0 the next ones of the progressive sum. Afterwards the output
+// image is ready to be read by a transfer command (copy or blit) in
 // VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL.
-void recordTrace(const Renderer& renderer, VkCommandBuffer commands);
+void recordTrace(const Renderer& renderer, VkCommandBuffer commands, SampleRange samples = {});
+
+// Points the camera elsewhere (the window's controls); takes effect at the next record.
+void setCamera(Renderer& renderer, const CameraPose& camera);
 
 // The same frame spread over several submissions (headless): recordTraceBegin in the
 // first command buffer, recordTraceRegion for each region, recordTraceEnd in the last.

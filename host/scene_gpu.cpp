@@ -13,10 +13,10 @@ static_assert(sizeof(gpu::GpuMaterial) == 32);
 static_assert(sizeof(gpu::GpuLight) == 32);
 static_assert(sizeof(gpu::GpuBvhNode) == 32);
 static_assert(offsetof(gpu::GpuBvhNode, boundsMaxAndCount) == 16);
-static_assert(sizeof(gpu::GpuFrameParams) == 96);
+static_assert(sizeof(gpu::GpuFrameParams) == 128);
 static_assert(sizeof(gpu::GpuFrameParams) <= 128, "push constants are limited to 128 bytes");
-static_assert(offsetof(gpu::GpuFrameParams, image) == 48);
-static_assert(offsetof(gpu::GpuFrameParams, tile) == 80);
+static_assert(offsetof(gpu::GpuFrameParams, image) == 80);
+static_assert(offsetof(gpu::GpuFrameParams, tile) == 112);
 
 namespace {
 

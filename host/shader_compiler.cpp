@@ -6,7 +6,9 @@
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
+#include <fstream>
 #include <memory>
+#include <sstream>
 #include <mutex>
 
 namespace {
@@ -85,4 +87,30 @@ ShaderSourceLoader embeddedShaderLoader() {
         if (it == sources.end()) return std::nullopt;
         return std::string(it->second);
     };
+}
+
+ShaderSourceLoader directoryShaderLoader(const std::filesystem::path& directory) {
+    return [directory](const std::string& name) -> std::optional<std::string> {
+        // Bare names only: an include cannot reach outside the folder.
+        if (name.empty() || name.find('/') != std::string::npos || name == "." || name == "..")
+            return std::nullopt;
+        std::ifstream file(directory / name, std::ios::binary);
+        if (!file) return std::nullopt;
+        std::ostringstream text;
+        text << file.rdbuf();
+        return text.str();
+    };
+}
+
+void writeEmbeddedShaders(const std::filesystem::path& directory) {
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    if (error) throw std::runtime_error("cannot create " + directory.string() + ": " + error.message());
+    for (const auto& [name, text] : embeddedShaderSources()) {
+        const std::filesystem::path path = directory / name;
+        std::ofstream file(path, std::ios::binary | std::ios::trunc);
+        file.write(text.data(), static_cast<std::streamsize>(text.size()));
+        file.close();
+        if (!file) throw std::runtime_error("cannot write " + path.string());
+    }
 }

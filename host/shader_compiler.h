@@ -1,8 +1,10 @@
-// GLSL to SPIR-V at run time with the glslang library. Sources come from memory
-// (the copies embedded in the binary), never from the working directory.
+// GLSL to SPIR-V at run time with the glslang library. Sources come from memory (the
+// copies embedded in the binary), or with --shader-dir from a folder the user names;
+// never from the working directory by chance.
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -23,3 +25,11 @@ std::vector<std::uint32_t> compileComputeShader(const std::string& mainFile,
 
 // A loader over the sources compiled into the binary.
 ShaderSourceLoader embeddedShaderLoader();
+
+// A loader over the files of a folder (--shader-dir): "shade.glsl" is DIR/shade.glsl.
+// Read afresh on every call, so a recompile sees the files as they are now.
+ShaderSourceLoader directoryShaderLoader(const std::filesystem::path& directory);
+
+// Writes every embedded source into directory (created if missing), for --dump-shaders.
+// Throws std::runtime_error naming the file that could not be written.
+void writeEmbeddedShaders(const std::filesystem::path& directory);

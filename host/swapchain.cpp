@@ -37,10 +37,21 @@ VkCompositeAlphaFlagBitsKHR chooseCompositeAlpha(VkCompositeAlphaFlagsKHR suppor
     return VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
 }
 
+VkPresentModeKHR choosePresentMode(const Context& context, VkSurfaceKHR surface, bool vsync) {
+    if (vsync) return VK_PRESENT_MODE_FIFO_KHR;
+    std::uint32_t count = 0;
+    VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(context.physicalDevice, surface, &count, nullptr));
+    std::vector<VkPresentModeKHR> modes(count);
+    VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(context.physicalDevice, surface, &count, modes.data()));
+    for (VkPresentModeKHR wanted : {VK_PRESENT_MODE_MAILBOX_KHR, VK_PRESENT_MODE_IMMEDIATE_KHR})
+        if (std::find(modes.begin(), modes.end(), wanted) != modes.end()) return wanted;
+    return VK_PRESENT_MODE_FIFO_KHR;
+}
+
 // Creates the swapchain; oldSwapchain (may be null) is handed to the driver so it can
 // reuse its resources. Returns false for a 0x0 surface.
 bool create(Swapchain& swapchain, const Context& context, VkSurfaceKHR surface, VkExtent2D framebufferSize,
-            VkSwapchainKHR oldSwapchain) {
+            VkSwapchainKHR oldSwapchain, bool vsync) {
     VkSurfaceCapabilitiesKHR capabilities{};
     VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(context.physicalDevice, surface, &capabilities));
     if (!(capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT))
@@ -69,12 +80,13 @@ bool create(Swapchain& swapchain, const Context& context, VkSurfaceKHR surface, 
     info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE; // one queue family does everything
     info.preTransform = capabilities.currentTransform;
     info.compositeAlpha = chooseCompositeAlpha(capabilities.supportedCompositeAlpha);
-    info.presentMode = VK_PRESENT_MODE_FIFO_KHR; // always available; vsync suits a static scene
+    info.presentMode = choosePresentMode(context, surface, vsync);
     info.clipped = VK_TRUE;
     info.oldSwapchain = oldSwapchain;
     VK_CHECK(vkCreateSwapchainKHR(context.device, &info, nullptr, &swapchain.swapchain));
     swapchain.format = format.format;
     swapchain.extent = extent;
+    swapchain.presentMode = info.presentMode;
 
     std::uint32_t count = 0;
     VK_CHECK(vkGetSwapchainImagesKHR(context.device, swapchain.swapchain, &count, nullptr));
@@ -98,12 +110,12 @@ void destroySemaphores(Swapchain& swapchain, const Context& context) {
 } // namespace
 
 bool createSwapchain(Swapchain& swapchain, const Context& context, VkSurfaceKHR surface,
-                     VkExtent2D framebufferSize) {
-    return create(swapchain, context, surface, framebufferSize, VK_NULL_HANDLE);
+                     VkExtent2D framebufferSize, bool vsync) {
+    return create(swapchain, context, surface, framebufferSize, VK_NULL_HANDLE, vsync);
 }
 
 bool recreateSwapchain(Swapchain& swapchain, const Context& context, VkSurfaceKHR surface,
-                       VkExtent2D framebufferSize) {
+                       VkExtent2D framebufferSize, bool vsync) {
     // Idle, so no submit still signals an old semaphore and no present still waits on one.
     VK_CHECK(vkDeviceWaitIdle(context.device));
     destroySemaphores(swapchain, context);
@@ -111,7 +123,7 @@ bool recreateSwapchain(Swapchain& swapchain, const Context& context, VkSurfaceKH
     swapchain = Swapchain{};
     bool created = false;
     try {
-        created = create(swapchain, context, surface, framebufferSize, old);
+        created = create(swapchain, context, surface, framebufferSize, old, vsync);
     } catch (...) {
         if (old) vkDestroySwapchainKHR(context.device, old, nullptr);
         throw;
@@ -126,4 +138,14 @@ void destroySwapchain(Swapchain& swapchain, const Context& context) {
     destroySemaphores(swapchain, context);
     if (swapchain.swapchain) vkDestroySwapchainKHR(context.device, swapchain.swapchain, nullptr);
     swapchain = Swapchain{};
+}
+
+const char* presentModeName(VkPresentModeKHR mode) {
+    switch (mode) {
+    case VK_PRESENT_MODE_FIFO_KHR: return "FIFO";
+    case VK_PRESENT_MODE_MAILBOX_KHR: return "MAILBOX";
+    case VK_PRESENT_MODE_IMMEDIATE_KHR: return "IMMEDIATE";
+    case VK_PRESENT_MODE_FIFO_RELAXED_KHR: return "FIFO_RELAXED";
+    default: return "other";
+    }
 }

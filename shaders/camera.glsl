@@ -17,12 +17,22 @@ struct Ray {
     vec3 direction; // unit length
 };
 
-// The primary ray through the point (u, v) of pixel (i, j), the SPEC's camera formula.
+// v rotated by the unit quaternion q (xyz vector part, w scalar part). For the identity
+// (0,0,0,1) both cross products are exactly zero, so v comes back bit for bit.
+vec3 rotateByQuaternion(vec4 q, vec3 v) {
+    return v + 2.0 * cross(q.xyz, cross(q.xyz, v) + q.w * v);
+}
+
+// The primary ray through the point (u, v) of pixel (i, j): the SPEC's camera formula in
+// camera space, then placed in the world by params.cameraOrigin and cameraOrientation
+// (--camera-pos/-target/-up). The direction is rotated before it is normalised, so the
+// SPEC camera (identity, origin 0) gives exactly the SPEC's rays.
 Ray cameraRay(uvec2 pixel, vec2 uv) {
     vec2 size = vec2(params.image.xy);
     vec2 ndc = vec2(2.0 * (float(pixel.x) + uv.x) / size.x - 1.0,
                     1.0 - 2.0 * (float(pixel.y) + uv.y) / size.y);
-    return Ray(vec3(0.0), normalize(vec3(ndc * params.camera.xy, -1.0)));
+    vec3 direction = rotateByQuaternion(params.cameraOrientation, vec3(ndc * params.camera.xy, -1.0));
+    return Ray(params.cameraOrigin.xyz, normalize(direction));
 }
 
 // Integer hash "lowbias32" (Chris Wellons, hash-prospector): a well-mixed 32-bit permutation.

@@ -39,7 +39,8 @@ using uint = std::uint32_t;
 #define BINDING_MATERIALS 6        // GpuMaterial per distinct material
 #define BINDING_LIGHTS 7           // GpuLight per light
 #define BINDING_BVH_NODES 8        // GpuBvhNode per hierarchy node, depth first (host/bvh.h)
-#define BINDING_COUNT 9
+#define BINDING_ACCUMULATION 9     // vec4 per pixel, row major: the window's running sum of samples
+#define BINDING_COUNT 10
 
 // Specialization constant ids (host/pipeline.h, TraceSpecialization), all bool.
 #define SPEC_USE_HIERARCHY 0 // walk the BVH (else test every primitive: scenes too small for one)
@@ -84,9 +85,15 @@ struct GpuFrameParams {
     vec4 background; // rgb colour of rays that hit nothing, w unused
     vec4 ambient;    // rgb ambient light added once per shading point, w unused
     vec4 camera;     // x: aspect * tan(fov/2), y: tan(fov/2), zw unused
-    uvec4 image;     // x: width, y: height, z: samples per pixel, w: reflection depth
+    vec4 cameraOrigin;      // the eye in world space: xyz, w unused (0 for the SPEC camera)
+    vec4 cameraOrientation; // unit quaternion xyzw, camera space to world (0,0,0,1 for the SPEC camera)
+    uvec4 image;     // x: width, y: height, z: samples per pixel n (sampleOffset's n), w: reflection depth
     uvec4 counts;    // x: spheres, y: triangles, z: lights, w unused
-    uvec4 tile;      // xy: first pixel of this dispatch, zw unused
+    // xy: first pixel of this dispatch. zw: the samples it adds: z the index of the first,
+    // w how many; w == 0 traces all image.z samples in one pass (headless). With w > 0
+    // (the window's progressive view) the sum of samples 0..z-1 is read from and the sum
+    // of 0..z+w-1 written to BINDING_ACCUMULATION, and the output shows their average.
+    uvec4 tile;
 };
 
 GPU_NAMESPACE_END

@@ -47,6 +47,9 @@ layout(set = 0, binding = BINDING_MATERIALS, std430) readonly buffer MaterialBuf
 layout(set = 0, binding = BINDING_LIGHTS, std430) readonly buffer LightBuffer { GpuLight lights[]; };
 // The hierarchy over spheres and triangles, depth first (bound only when useHierarchy is 1).
 layout(set = 0, binding = BINDING_BVH_NODES, std430) readonly buffer BvhNodeBuffer { GpuBvhNode bvhNodes[]; };
+// The window's running sum of each pixel's samples (see GpuFrameParams.tile); a dummy
+// when tracing in one pass.
+layout(set = 0, binding = BINDING_ACCUMULATION, std430) buffer AccumulationBuffer { vec4 accumulation[]; };
 
 #include "camera.glsl"
 #include "ray_offset.glsl"
@@ -92,13 +95,23 @@ void main() {
                   pixelInTile(gl_LocalInvocationID.xy);
     if (any(greaterThanEqual(pixel, params.image.xy))) return;
 
+    // Samples first..end-1 of n. One pass (tile.w == 0, headless) sums all n here; the
+    // window's progressive view adds tile.w of them per dispatch to the running sum in
+    // accumulation[], so after the last one it holds the same floats, added in the same
+    // order, as the one-pass sum: the final image is the headless one, bit for bit.
     uint samples = max(params.image.z, 1u);
+    bool progressive = params.tile.w != 0u;
+    uint first = progressive ? params.tile.z : 0u;
+    uint end = progressive ? min(first + params.tile.w, samples) : samples;
+    uint slot = pixel.y * params.image.x + pixel.x;
     vec3 sum = vec3(0.0);
-    for (uint s = 0u; s < samples; ++s) {
+    if (progressive && first != 0u) sum = accumulation[slot].rgb;
+    for (uint s = first; s < end; ++s) {
         sum += clamp(traceRay(cameraRay(pixel, sampleOffset(pixel, s, samples))), 0.0, 1.0);
     }
+    if (progressive) accumulation[slot] = vec4(sum, 0.0);
     // floor(c * 255 + 0.5) here, stored as k / 255: the UNORM conversion then gives exactly k
     // whatever the driver's rounding (k / 255 * 255 rounds back to k for every k).
-    vec3 level = floor(sum / float(samples) * 255.0 + 0.5);
+    vec3 level = floor(sum / float(end) * 255.0 + 0.5);
     imageStore(outputImage, ivec2(pixel), vec4(level / 255.0, 1.0));
 }

@@ -14,42 +14,8 @@ readonly RESIZED_WIDTH=400 RESIZED_HEIGHT=300 # after `xdotool windowsize`
 readonly WINDOW_DEADLINE=90 # seconds for the first frame (lavapipe with validation starts slowly)
 readonly EXIT_DEADLINE=30   # seconds from the key press to the process's exit
 
-# xwd dump (TrueColor, 24 or 32 bits per pixel) to an RGB PNG, standard library only.
-xwd_to_png() {
-    timeout 30 python3 - "$1" "$2" <<'PY'
-import struct, sys, zlib
-data = open(sys.argv[1], "rb").read()
-(header_size, _version, pixmap_format, _depth, width, height, _xoffset, byte_order, _unit,
- _bit_order, _pad, bits_per_pixel, bytes_per_line, visual_class, red_mask, green_mask,
- blue_mask, _bits_per_rgb, _entries, ncolors) = struct.unpack(">20I", data[:80])
-if pixmap_format != 2 or visual_class not in (4, 5) or bits_per_pixel not in (24, 32):
-    sys.exit(f"xwd: unsupported dump (format {pixmap_format}, visual {visual_class}, {bits_per_pixel} bpp)")
-pixels = header_size + 12 * ncolors  # the header, then ncolors 12-byte colormap entries
-step, order = bits_per_pixel // 8, "little" if byte_order == 0 else "big"
-def channel(value, mask):  # the masked bits, scaled to 8 bits
-    shift = (mask & -mask).bit_length() - 1
-    return ((value & mask) >> shift) * 255 // (mask >> shift)
-rows = bytearray()
-for y in range(height):
-    rows.append(0)  # PNG filter type: none
-    line = pixels + y * bytes_per_line
-    for x in range(width):
-        value = int.from_bytes(data[line + x * step:line + (x + 1) * step], order)
-        rows += bytes((channel(value, red_mask), channel(value, green_mask), channel(value, blue_mask)))
-def chunk(kind, body):
-    return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
-with open(sys.argv[2], "wb") as png:
-    png.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0))
-              + chunk(b"IDAT", zlib.compress(bytes(rows))) + chunk(b"IEND", b""))
-print(f"{width}x{height}")
-PY
-}
-
-# The id of the window whose title says it shows SCENE at WxH with a frame time.
-find_window() { # NAME W H
-    timeout 10 xwininfo -root -tree | grep -F "\"$1 - $2x$3 - " | grep -E ' ms": ' |
-        awk '{ print $1 }' | head -n 1 || true
-}
+# xwd_to_png and find_window come from window_lib.sh, shared with the other window tests.
+source "$(dirname "${BASH_SOURCE[0]}")/window_lib.sh"
 
 passed=0 failed=0
 pass() { echo "PASS: $*"; passed=$((passed + 1)); }
@@ -62,7 +28,7 @@ check_window_shows() { # PID NAME W H EXPECTED.PNG PREFIX
     local pid=$1 name=$2 width=$3 height=$4 expected=$5 prefix=$6 id="" deadline=$((SECONDS + WINDOW_DEADLINE))
     while [[ -z $id ]]; do
         if ! kill -0 "$pid" 2>/dev/null; then fail "$prefix: the program ended before showing ${width}x${height}"; return 1; fi
-        if ((SECONDS > deadline)); then fail "$prefix: no window titled '$name - ${width}x${height} - ... ms' within ${WINDOW_DEADLINE} s"; return 1; fi
+        if ((SECONDS > deadline)); then fail "$prefix: no window titled '$name - ${width}x${height} - 1/1 spp - ...' within ${WINDOW_DEADLINE} s"; return 1; fi
         sleep 0.5
         id=$(find_window "$name" "$width" "$height")
     done
@@ -126,7 +92,8 @@ test_scene() { # SCENE KEY RESIZE(yes|no)
     if [[ $resize == yes ]]; then
         render_headless "$scene" "$RESIZED_WIDTH" "$RESIZED_HEIGHT" "$stem-headless-resized.png" || return 0
     fi
-    timeout 120 "$raytracer" "$scene" --validate --width "$WIDTH" --height "$HEIGHT" > "$stem-window.log" 2>&1 &
+    # --spp 1: refinement stops at the headless default of one sample per pixel.
+    timeout 120 "$raytracer" "$scene" --validate --spp 1 --width "$WIDTH" --height "$HEIGHT" > "$stem-window.log" 2>&1 &
     pid=$!
     if ! check_window_shows "$pid" "$name" "$WIDTH" "$HEIGHT" "$stem-headless.png" "$stem-window"; then
         kill "$pid" 2>/dev/null || true

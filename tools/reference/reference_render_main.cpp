@@ -15,7 +15,8 @@ namespace {
 const char* const usage =
     "usage: reference_render SCENE -o OUT.png [--width W] [--height H] [--depth D]\n"
     "                        [--spp N] [--background R,G,B] [--fov DEG] [--truncate]\n"
-    "                        [--threads N]\n"
+    "                        [--threads N] [--camera-pos X,Y,Z] [--camera-target X,Y,Z]\n"
+    "                        [--camera-up X,Y,Z]\n"
     "Renders SCENE with the double-precision CPU reference (SPEC.md's model).\n"
     "  --width W --height H   image size, default 640 480\n"
     "  --depth D              reflection bounces, default 5\n"
@@ -23,7 +24,10 @@ const char* const usage =
     "  --background R,G,B     colour of rays that hit nothing, default 1,1,1\n"
     "  --fov DEG              vertical field of view, default 60\n"
     "  --truncate             write floor(c*255) instead of rounding (the course's images)\n"
-    "  --threads N            worker threads, default: one per hardware thread\n";
+    "  --threads N            worker threads, default: one per hardware thread\n"
+    "  --camera-pos X,Y,Z     eye position, default 0,0,0\n"
+    "  --camera-target X,Y,Z  point looked at, default 0,0,-1 from the eye\n"
+    "  --camera-up X,Y,Z      up direction, default 0,1,0\n";
 
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -50,18 +54,22 @@ int parseCount(std::string_view option, std::string_view text, int minimum) {
     return value;
 }
 
-glm::dvec3 parseColour(std::string_view option, std::string_view text) {
-    glm::dvec3 colour;
+glm::dvec3 parseTriple(std::string_view option, std::string_view text, bool signedValues) {
+    glm::dvec3 value;
     for (int k = 0; k < 3; ++k) {
         const std::size_t comma = text.find(',');
         if ((k < 2) != (comma != std::string_view::npos))
-            throw UsageError(std::string(option) + " expects R,G,B");
-        colour[k] = parseNumber<double>(option, text.substr(0, comma));
-        if (colour[k] < 0)
+            throw UsageError(std::string(option) + " expects three numbers separated by commas");
+        value[k] = parseNumber<double>(option, text.substr(0, comma));
+        if (!signedValues && value[k] < 0)
             throw UsageError(std::string(option) + " components must not be negative");
         text = k < 2 ? text.substr(comma + 1) : std::string_view();
     }
-    return colour;
+    return value;
+}
+
+glm::dvec3 parseColour(std::string_view option, std::string_view text) {
+    return parseTriple(option, text, false);
 }
 
 } // namespace
@@ -70,6 +78,7 @@ int main(int argc, char** argv) {
     std::string scenePath, outputPath;
     ReferenceSettings settings;
     int threads = 0;
+    bool targetGiven = false; // else the target follows --camera-pos: looking down -z
     try {
         for (int k = 1; k < argc; ++k) {
             const std::string_view arg = argv[k];
@@ -98,6 +107,14 @@ int main(int argc, char** argv) {
                 settings.fovDegrees = parseNumber<double>(arg, value());
                 if (!(settings.fovDegrees > 0 && settings.fovDegrees < 180))
                     throw UsageError("--fov must be between 0 and 180 degrees");
+            } else if (arg == "--camera-pos") {
+                settings.cameraPosition = parseTriple(arg, value(), true);
+                if (!targetGiven) settings.cameraTarget = settings.cameraPosition + glm::dvec3(0, 0, -1);
+            } else if (arg == "--camera-target") {
+                settings.cameraTarget = parseTriple(arg, value(), true);
+                targetGiven = true;
+            } else if (arg == "--camera-up") {
+                settings.cameraUp = parseTriple(arg, value(), true);
             } else if (arg == "--truncate") {
                 settings.truncate = true;
             } else if (arg.starts_with("-")) {

@@ -262,6 +262,10 @@ dvec3 traceRay(const World& world, const ReferenceSettings& settings, Ray ray,
 
 struct Camera {
     double width, height, tanHalfX, tanHalfY;
+    // World-space axes: camera-space x, y and the view direction (camera -z). The SPEC
+    // camera's are the unit axes, which keeps its rays exactly (x, y, -1).
+    dvec3 right{1, 0, 0}, up{0, 1, 0}, forward{0, 0, -1};
+    dvec3 eye{0.0};
     std::vector<glm::dvec2> samples; // offsets (u, v) inside a pixel
 };
 
@@ -277,6 +281,15 @@ Camera makeCamera(const ReferenceSettings& settings) {
     if (!(settings.fovDegrees > 0 && settings.fovDegrees < 180))
         throw std::invalid_argument("field of view must be between 0 and 180 degrees");
     Camera camera;
+    const dvec3 view = settings.cameraTarget - settings.cameraPosition;
+    if (glm::length(view) == 0) throw std::invalid_argument("camera target equals camera position");
+    camera.forward = glm::normalize(view);
+    const dvec3 side = glm::cross(camera.forward, settings.cameraUp);
+    if (glm::length(side) < 1e-9 * glm::length(settings.cameraUp) || glm::length(settings.cameraUp) == 0)
+        throw std::invalid_argument("camera up is zero or parallel to the view direction");
+    camera.right = glm::normalize(side);
+    camera.up = glm::cross(camera.right, camera.forward);
+    camera.eye = settings.cameraPosition;
     camera.width = settings.width;
     camera.height = settings.height;
     camera.tanHalfY = std::tan(settings.fovDegrees * (std::numbers::pi / 360.0));
@@ -291,11 +304,12 @@ Camera makeCamera(const ReferenceSettings& settings) {
 }
 
 // SPEC's camera: x = (2 (i + u) / W - 1) * aspect * tan(fov/2),
-// y = (1 - 2 (j + v) / H) * tan(fov/2), direction normalize(x, y, -1).
+// y = (1 - 2 (j + v) / H) * tan(fov/2), direction normalize(x, y, -1) in camera space,
+// turned into the world by the camera's axes.
 dvec3 eyeDirection(const Camera& camera, int i, int j, glm::dvec2 sample) {
     const double x = (2.0 * (i + sample.x) / camera.width - 1.0) * camera.tanHalfX;
     const double y = (1.0 - 2.0 * (j + sample.y) / camera.height) * camera.tanHalfY;
-    return glm::normalize(dvec3(x, y, -1.0));
+    return glm::normalize(x * camera.right + y * camera.up + camera.forward);
 }
 
 double clampChannel(double c) {
@@ -307,7 +321,7 @@ dvec3 pixelColour(const World& world, const ReferenceSettings& settings, const C
     dvec3 sum(0.0);
     for (glm::dvec2 sample : camera.samples) {
         const dvec3 c =
-            traceRay(world, settings, Ray{dvec3(0.0), eyeDirection(camera, i, j, sample)}, path);
+            traceRay(world, settings, Ray{camera.eye, eyeDirection(camera, i, j, sample)}, path);
         sum += dvec3(clampChannel(c.x), clampChannel(c.y), clampChannel(c.z));
     }
     return sum / double(camera.samples.size());

@@ -13,6 +13,10 @@ struct ReferenceSettings {
     int depth = 5; // reflection bounces after the primary hit
     int spp = 1;   // 1: pixel centre; n*n: regular grid; else the most square grid of n
     double fovDegrees = 60;
+    // The eye and where it looks; the defaults are the SPEC camera (origin, down -z).
+    glm::dvec3 cameraPosition{0.0};
+    glm::dvec3 cameraTarget{0.0, 0.0, -1.0};
+    glm::dvec3 cameraUp{0.0, 1.0, 0.0};
     glm::dvec3 background{1.0};
     // floor(c*255) instead of rounding, to compare with the course's images.
     bool truncate = false;
@@ -20,7 +24,8 @@ struct ReferenceSettings {
 
 // Renders the whole image. threads = 0 uses std::thread::hardware_concurrency().
 // Throws std::invalid_argument for a non-positive size or spp, a negative depth or
-// a field of view outside (0, 180) degrees.
+// a field of view outside (0, 180) degrees, or a camera whose target is its position or
+// whose up is parallel to the view.
 Image8 renderReference(const Scene& scene, const ReferenceSettings& settings, int threads = 0);
 
 // One pixel (column i from the left, row j from the top) as it goes into the

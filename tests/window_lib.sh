@@ -1,0 +1,96 @@
+# Shared by the window tests (sourced): reading the window back and finding it by title.
+# Needs python3, xwd and xwininfo.
+
+# xwd dump (TrueColor, 24 or 32 bits per pixel) to an RGB PNG, standard library only.
+xwd_to_png() {
+    timeout 30 python3 - "$1" "$2" <<'PY'
+import struct, sys, zlib
+data = open(sys.argv[1], "rb").read()
+(header_size, _version, pixmap_format, _depth, width, height, _xoffset, byte_order, _unit,
+ _bit_order, _pad, bits_per_pixel, bytes_per_line, visual_class, red_mask, green_mask,
+ blue_mask, _bits_per_rgb, _entries, ncolors) = struct.unpack(">20I", data[:80])
+if pixmap_format != 2 or visual_class not in (4, 5) or bits_per_pixel not in (24, 32):
+    sys.exit(f"xwd: unsupported dump (format {pixmap_format}, visual {visual_class}, {bits_per_pixel} bpp)")
+pixels = header_size + 12 * ncolors  # the header, then ncolors 12-byte colormap entries
+step, order = bits_per_pixel // 8, "little" if byte_order == 0 else "big"
+def channel(value, mask):  # the masked bits, scaled to 8 bits
+    shift = (mask & -mask).bit_length() - 1
+    return ((value & mask) >> shift) * 255 // (mask >> shift)
+rows = bytearray()
+for y in range(height):
+    rows.append(0)  # PNG filter type: none
+    line = pixels + y * bytes_per_line
+    for x in range(width):
+        value = int.from_bytes(data[line + x * step:line + (x + 1) * step], order)
+        rows += bytes((channel(value, red_mask), channel(value, green_mask), channel(value, blue_mask)))
+def chunk(kind, body):
+    return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
+with open(sys.argv[2], "wb") as png:
+    png.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0))
+              + chunk(b"IDAT", zlib.compress(bytes(rows))) + chunk(b"IEND", b""))
+print(f"{width}x{height}")
+PY
+}
+
+# The id of the window whose title says it shows SCENE at WxH with all SPP samples in
+# ("NAME - WxH - k/N spp - T ms - DEVICE", k == N: refinement is done).
+find_window() { # NAME W H [SPP]
+    local spp=${4:-1}
+    timeout 10 xwininfo -root -tree | grep -F "\"$1 - $2x$3 - $spp/$spp spp - " |
+        awk '{ print $1 }' | head -n 1 || true
+}
+
+# Waits until LOG holds at least COUNT lines matching the fixed string TEXT, while PID
+# runs; fails after SECONDS. Returns 0 when they are there.
+wait_for_log() { # PID LOG TEXT COUNT SECONDS
+    local pid=$1 log=$2 text=$3 count=$4 deadline=$((SECONDS + $5))
+    while (($(grep -cF -- "$text" "$log" || true) < count)); do
+        kill -0 "$pid" 2>/dev/null || return 1
+        ((SECONDS <= deadline)) || return 1
+        sleep 0.2
+    done
+}
+
+# Captures window ID until it equals EXPECTED.PNG exactly (a few tries: the present may
+# reach the X server a moment after the program logs the frame). Writes PREFIX.png and
+# PREFIX-diff.txt; returns 0 on a match.
+window_matches() { # ID EXPECTED.PNG PREFIX
+    local id=$1 expected=$2 prefix=$3
+    for _ in 1 2 3 4 5 6 7 8; do
+        sleep 0.4
+        timeout 10 xwd -id "$id" -silent > "$prefix.xwd" 2>/dev/null || continue
+        xwd_to_png "$prefix.xwd" "$prefix.png" > /dev/null || continue
+        if timeout 30 "$image_diff" "$expected" "$prefix.png" --tolerance 0 --min-match 100 \
+            --diff "$prefix-diff.png" > "$prefix-diff.txt" 2>&1; then
+            return 0
+        fi
+    done
+    return 1
+}
+
+# The id of the first window whose title starts with "NAME - ", waiting up to SECONDS.
+wait_for_window() { # PID NAME SECONDS
+    local pid=$1 name=$2 deadline=$((SECONDS + $3)) id=""
+    while [[ -z $id ]]; do
+        kill -0 "$pid" 2>/dev/null || return 1
+        ((SECONDS <= deadline)) || return 1
+        sleep 0.3
+        id=$(timeout 10 xwininfo -root -tree | grep -F "\"$name - " | awk '{ print $1 }' | head -n 1 || true)
+    done
+    echo "$id"
+}
+
+# Ends PID with KEY sent to window ID; 0 when it exits with status 0 within 30 s.
+quit_with_key() { # PID ID KEY
+    local pid=$1 id=$2 key=$3 status=0
+    timeout 10 xdotool keydown --window "$id" "$key" || true
+    for _ in $(seq 1 150); do kill -0 "$pid" 2>/dev/null || break; sleep 0.2; done
+    if kill -0 "$pid" 2>/dev/null; then kill "$pid"; wait "$pid" || true; return 1; fi
+    wait "$pid" || status=$?
+    return "$status"
+}
+
+# Sends one key press and release to window ID.
+press_key() { # ID KEY
+    timeout 10 xdotool key --window "$1" "$2" || true
+}

@@ -1,0 +1,130 @@
+#!/usr/bin/env bash
+# The progressive view under Xvfb: with --spp N the window refines to exactly the headless
+# --spp N image (tolerance 0), also from a moved camera; P writes a PNG identical to it;
+# V recreates the swapchain; a mouse drag moves the camera and C and Home reset it to the
+# SPEC camera; Q quits with status 0 and the validation layer stays silent.
+#
+# usage: window_progressive_test.sh RAYTRACER SCENE OUTPUT_DIR IMAGE_DIFF
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/window_lib.sh"
+
+readonly WIDTH=200 HEIGHT=150 SPP=4
+readonly CAMERA=(--camera-pos 3,4,2 --camera-target 0,0,-8 --camera-up 0,1,0.2)
+
+passed=0 failed=0
+pass() { echo "PASS: $*"; passed=$((passed + 1)); }
+fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
+
+headless() { # OUT.PNG ARGS...
+    local out=$1
+    shift
+    env -u DISPLAY timeout 120 "$raytracer" "$scene" -o "$out" --width $WIDTH --height $HEIGHT --spp $SPP "$@" \
+        > "$out.log" 2>&1 || { echo "FAIL: headless render $out (log $out.log)"; exit 1; }
+}
+
+run_inside_xvfb() {
+    cd "$output_dir"
+    headless moved.png "${CAMERA[@]}"
+    headless spec.png
+    local log=window.log name id
+    name=$(basename "$scene")
+    timeout 150 "$raytracer" "$scene" --validate --width $WIDTH --height $HEIGHT --spp $SPP "${CAMERA[@]}" \
+        > "$log" 2>&1 &
+    local pid=$!
+    id=$(wait_for_window "$pid" "$name" 90) || { fail "no window (log $log)"; cat "$log"; exit 1; }
+
+    if wait_for_log "$pid" "$log" "Refined: $SPP samples" 1 60 && window_matches "$id" moved.png moved-window; then
+        pass "moved camera: after $SPP samples the window equals headless --spp $SPP ($(cat moved-window-diff.txt))"
+    else
+        fail "moved camera: the window differs from moved.png (see moved-window.png, $(cat moved-window-diff.txt 2>/dev/null))"
+    fi
+
+    press_key "$id" p
+    if wait_for_log "$pid" "$log" "Screenshot: wrote" 1 30; then
+        local shot
+        shot=$(grep -F "Screenshot: wrote" "$log" | head -n 1 | sed -E 's/^Screenshot: wrote (.*) \([0-9]+x.*$/\1/')
+        if [[ -f $shot ]] && "$image_diff" moved.png "$shot" --tolerance 0 --min-match 100 > shot-diff.txt 2>&1; then
+            pass "P wrote $shot, identical to the headless render ($(cat shot-diff.txt))"
+        else
+            fail "P: $shot differs from moved.png: $(cat shot-diff.txt 2>/dev/null)"
+        fi
+    else
+        fail "P wrote no screenshot (log $log)"
+    fi
+
+    press_key "$id" v
+    if wait_for_log "$pid" "$log" "Vsync off" 1 20 && window_matches "$id" moved.png vsync-window; then
+        pass "V: swapchain recreated without vsync, the image is still exact"
+    else
+        fail "V: no 'Vsync off' or the image changed (log $log)"
+    fi
+
+    press_key "$id" c
+    if wait_for_log "$pid" "$log" "Refined: $SPP samples" 2 60 && window_matches "$id" spec.png spec-window; then
+        pass "C: reset to the SPEC camera, equals the default headless render"
+    else
+        fail "C: the window differs from spec.png (see spec-window.png)"
+    fi
+
+    # Each camera move below must change the view; each reset must restore the SPEC view
+    # exactly. A move may finish several refinements, so the log is counted afresh each time.
+    local x=$((WIDTH / 2)) y=$((HEIGHT / 2))
+    moved_view() { # LABEL PREFIX: waits for a new refinement, expects a view unlike spec.png
+        if wait_for_log "$pid" "$log" "Refined: $SPP samples" $((refined + 1)) 60 && ! window_matches "$id" spec.png "$2"; then
+            pass "$1 moves the camera (the view changed)"
+        else
+            fail "$1 did not move the camera"
+        fi
+        sleep 1
+    }
+    reset_view() { # KEY PREFIX
+        refined=$(grep -cF "Refined: $SPP samples" "$log")
+        press_key "$id" "$1"
+        if wait_for_log "$pid" "$log" "Refined: $SPP samples" $((refined + 1)) 60 && window_matches "$id" spec.png "$2"; then
+            pass "$1: back to the SPEC camera exactly"
+        else
+            fail "$1: the window differs from spec.png (see $2.png)"
+        fi
+    }
+    local refined
+    refined=$(grep -cF "Refined: $SPP samples" "$log")
+    timeout 10 xdotool mousemove --window "$id" $x $y mousedown 1 mousemove --window "$id" $((x + 30)) $((y + 10)) \
+        sleep 0.2 mousemove --window "$id" $((x + 60)) $((y + 20)) sleep 0.2 mouseup 1 || true
+    moved_view "a left drag (orbit)" orbit-window
+    reset_view Home home-window
+    refined=$(grep -cF "Refined: $SPP samples" "$log")
+    timeout 10 xdotool mousemove --window "$id" $x $y click 4 click 4 || true
+    moved_view "the wheel (dolly)" dolly-window
+    reset_view c c-after-dolly-window
+    refined=$(grep -cF "Refined: $SPP samples" "$log")
+    timeout 10 xdotool keydown --window "$id" w sleep 0.5 keyup --window "$id" w || true
+    moved_view "holding W (fly)" fly-window
+    reset_view Home home-after-fly-window
+
+    if quit_with_key "$pid" "$id" q; then
+        if grep -qiE "validation (error|warning)|VUID-" "$log"; then fail "the validation layer spoke (log $log)"
+        else pass "Q quit with status 0, validation silent"; fi
+    else
+        fail "Q did not end the program with status 0 (log $log)"
+    fi
+    echo "window progressive test: $passed passed, $failed failed (files in $output_dir)"
+    ((failed == 0))
+}
+
+if [[ $# == 5 && $1 == --inside-xvfb ]]; then
+    raytracer=$2 scene=$3 output_dir=$4 image_diff=$5
+    run_inside_xvfb
+    exit
+fi
+if (($# != 4)); then
+    echo "usage: $0 RAYTRACER SCENE OUTPUT_DIR IMAGE_DIFF" >&2
+    exit 2
+fi
+for tool in xvfb-run xauth xwininfo xwd xdotool python3 timeout; do
+    command -v "$tool" > /dev/null || { echo "window test: $tool is missing (tools/install_deps.sh)"; exit 1; }
+done
+mkdir -p "$3"
+absolute() { echo "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; }
+rm -f "$3"/*.png "$3"/*.xwd "$3"/*.log "$3"/*.txt
+timeout 280 xvfb-run -a -s "-screen 0 1024x768x24" \
+    "$(absolute "$0")" --inside-xvfb "$(absolute "$1")" "$(absolute "$2")" "$(absolute "$3")" "$(absolute "$4")"
