@@ -39,12 +39,14 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
     HeadlessTarget target;
     try {
         createInstance(context, {}, options.validate);
-        createDevice(context, options.device);
+        createDevice(context, options.device, VK_NULL_HANDLE,
+                     options.kernel.precision == Precision::Fp64);
         checkImageFits(imageLimitsOf(context), options.width, options.height, true);
         RenderSettings settings{options.width, options.height, options.samplesPerPixel, options.depth,
                                 glm::vec3(options.background), options.fovDegrees,
                                 options.acceleration};
         settings.cacheDirectory = userCacheDirectory(options.useCache);
+        settings.kernel = options.kernel;
         createRenderer(renderer, context, scene, settings);
         createHeadlessTarget(target, context, renderer, options.tileSide);
         if (options.benchFrames > 0) {

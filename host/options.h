@@ -2,6 +2,7 @@
 #pragma once
 
 #include "bvh.h"
+#include "kernel_choices.h"
 
 #include <glm/glm.hpp>
 
@@ -29,6 +30,7 @@ struct Options {
     bool progress = false;      // --progress: report progress even for a short render
     bool forceWindow = false;   // --window: a window or an error, never the headless fallback
     bool redrawContinuously = false; // --redraw-continuously (hidden, for the soak test)
+    KernelChoices kernel; // --sampler, --seed, --precision, --sphere-test, --triangle-test, --offset
 };
 
 // A command line that does not make sense; what() is the message for the user.
