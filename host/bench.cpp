@@ -7,6 +7,7 @@
 #include <ctime>
 #include <fstream>
 #include <sstream>
+#include <sys/resource.h>
 #include <unistd.h>
 #include <vector>
 
@@ -29,6 +30,16 @@ double processStartSecondsSinceBoot() {
     for (int index = 3; index <= 22 && fields >> field; ++index)
         if (index == 22) return double(std::stoull(field)) / double(sysconf(_SC_CLK_TCK));
     return -1.0;
+}
+
+// CPU time used so far by every thread of the process (user + system), in ms. On a CPU
+// driver such as lavapipe the trace runs on the process's own threads, and their CPU time
+// is far less disturbed by other load on the machine than wall time.
+double processCpuMilliseconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    auto ms = [](const timeval& t) { return double(t.tv_sec) * 1e3 + double(t.tv_usec) * 1e-3; };
+    return ms(usage.ru_utime) + ms(usage.ru_stime);
 }
 
 } // namespace
@@ -57,12 +68,14 @@ std::string runBenchmark(const Context& context, const Renderer& renderer, Headl
 
     std::vector<double> wallMs, gpuMs;
     std::uint32_t submissions = 0;
+    const double cpuStart = processCpuMilliseconds();
     for (std::uint32_t frame = 0; frame < options.benchFrames; ++frame) {
         FrameTiming timing = renderHeadlessFrame(target, context, renderer);
         wallMs.push_back(timing.wallMs);
         gpuMs.push_back(timing.gpuMs);
         submissions = timing.submissions;
     }
+    const double cpuMsPerFrame = (processCpuMilliseconds() - cpuStart) / options.benchFrames;
     const RenderSettings& settings = renderer.settings;
     double pixels = double(settings.width) * settings.height;
     double wallMedian = median(wallMs);
@@ -77,12 +90,21 @@ std::string runBenchmark(const Context& context, const Renderer& renderer, Headl
          << ", \"wall_ms_min\": " << jsonNumber(*std::min_element(wallMs.begin(), wallMs.end()))
          << ", \"gpu_ms_median\": "
          << (context.timestampsSupported ? jsonNumber(median(gpuMs)) : "null")
+         << ", \"cpu_ms_per_frame\": " << jsonNumber(cpuMsPerFrame)
          << ", \"startup_ms\": " << jsonNumber(startupMs)
          << ", \"parse_ms\": " << jsonNumber(startup.parseMs)
          << ", \"submissions\": " << submissions << ", \"gpu_bytes\": " << renderer.scene.bytes
          << ", \"spheres\": " << renderer.scene.sphereCount
          << ", \"triangles\": " << renderer.scene.triangleCount
-         << ", \"lights\": " << renderer.scene.lightCount << ", \"primary_rays_per_second\": "
+         << ", \"lights\": " << renderer.scene.lightCount
+         << ", \"sampler\": " << jsonString(choiceName(samplerNames(), settings.kernel.sampler))
+         << ", \"seed\": " << settings.kernel.seed
+         << ", \"precision\": " << jsonString(choiceName(precisionNames(), settings.kernel.precision))
+         << ", \"sphere_test\": " << jsonString(choiceName(sphereTestNames(), settings.kernel.sphereTest))
+         << ", \"triangle_test\": "
+         << jsonString(choiceName(triangleTestNames(), settings.kernel.triangleTest))
+         << ", \"offset\": " << jsonString(choiceName(rayOffsetNames(), settings.kernel.offset))
+         << ", \"primary_rays_per_second\": "
          << jsonNumber(pixels * settings.samplesPerPixel / (wallMedian * 1e-3)) << "}";
     return json.str();
 }

@@ -20,6 +20,8 @@ struct StartupTimes {
 };
 
 // Renders warm-up frames, then options.benchFrames timed ones, and returns the
-// JSON object of SPEC.md ("--bench") with parse_ms and per-frame submissions added.
+// JSON object of SPEC.md ("--bench") with parse_ms, per-frame submissions, the process's
+// CPU time per timed frame (cpu_ms_per_frame: the trace's cost on a CPU driver, robust to
+// other load) and the kernel choices added.
 std::string runBenchmark(const Context& context, const Renderer& renderer, HeadlessTarget& target,
                          const Options& options, const StartupTimes& startup);

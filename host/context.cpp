@@ -177,7 +177,17 @@ void createInstance(Context& context, const std::vector<const char*>& extensions
     }
 }
 
-void createDevice(Context& context, const std::string& deviceRequest, VkSurfaceKHR surface) {
+void requireFloat64(const VkPhysicalDeviceFeatures& features, const char* deviceName) {
+    if (!features.shaderFloat64)
+        throw std::runtime_error(std::string("--precision fp64 needs the shaderFloat64 feature "
+                                             "(double precision in shaders), which ") +
+                                 deviceName +
+                                 " does not have; use --precision fp32 (the default) or "
+                                 "choose another device with --device");
+}
+
+void createDevice(Context& context, const std::string& deviceRequest, VkSurfaceKHR surface,
+                  bool needFloat64) {
     std::uint32_t count = 0;
     VK_CHECK(vkEnumeratePhysicalDevices(context.instance, &count, nullptr));
     std::vector<VkPhysicalDevice> devices(count);
@@ -195,6 +205,13 @@ void createDevice(Context& context, const std::string& deviceRequest, VkSurfaceK
     vkGetPhysicalDeviceMemoryProperties(chosen.device, &context.memoryProperties);
     std::fprintf(stderr, "Device: %s (%s)\n", chosen.properties.deviceName,
                  deviceTypeName(chosen.properties.deviceType));
+    VkPhysicalDeviceFeatures enabledFeatures{};
+    if (needFloat64) {
+        VkPhysicalDeviceFeatures supported{};
+        vkGetPhysicalDeviceFeatures(chosen.device, &supported);
+        requireFloat64(supported, chosen.properties.deviceName);
+        enabledFeatures.shaderFloat64 = VK_TRUE;
+    }
 
     std::uint32_t familyCount = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(chosen.device, &familyCount, nullptr);
@@ -212,11 +229,13 @@ void createDevice(Context& context, const std::string& deviceRequest, VkSurfaceK
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queueInfo;
+    info.pEnabledFeatures = &enabledFeatures;
     if (surface) {
         info.enabledExtensionCount = 1;
         info.ppEnabledExtensionNames = &swapchainExtension;
     }
     VK_CHECK(vkCreateDevice(chosen.device, &info, nullptr, &context.device));
+    context.float64Enabled = needFloat64;
     vkGetDeviceQueue(context.device, chosen.queueFamily, 0, &context.queue);
 
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};

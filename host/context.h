@@ -19,6 +19,7 @@ struct Context {
     VkQueue queue = VK_NULL_HANDLE;
     VkCommandPool commandPool = VK_NULL_HANDLE;
     bool timestampsSupported = false;
+    bool float64Enabled = false; // shaderFloat64 on, for --precision fp64 (createDevice)
 };
 
 // extensions: instance extensions the caller needs (GLFW's for a window).
@@ -28,8 +29,13 @@ void createInstance(Context& context, const std::vector<const char*>& extensions
 // Chooses a device: deviceRequest (a name substring or an index, as --device) when
 // given, otherwise a discrete GPU before an integrated, virtual or CPU one. With a
 // surface, only devices that can present to it qualify. Prints the choice to stderr.
+// needFloat64 (--precision fp64) enables shaderFloat64, or fails before anything else
+// is created when the chosen device lacks it (requireFloat64's message).
 void createDevice(Context& context, const std::string& deviceRequest,
-                  VkSurfaceKHR surface = VK_NULL_HANDLE);
+                  VkSurfaceKHR surface = VK_NULL_HANDLE, bool needFloat64 = false);
+
+// Throws the message for --precision fp64 on a device without shaderFloat64.
+void requireFloat64(const VkPhysicalDeviceFeatures& features, const char* deviceName);
 
 void destroyContext(Context& context);
 

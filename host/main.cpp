@@ -39,7 +39,8 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
     HeadlessTarget target;
     try {
         createInstance(context, {}, options.validate);
-        createDevice(context, options.device);
+        createDevice(context, options.device, VK_NULL_HANDLE,
+                     options.kernel.precision == Precision::Fp64);
         checkImageFits(imageLimitsOf(context), options.width, options.height, true);
         RenderSettings settings{options.width, options.height, options.samplesPerPixel, options.depth,
                                 glm::vec3(options.background), options.fovDegrees,
@@ -47,6 +48,7 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
         settings.cacheDirectory = userCacheDirectory(options.useCache);
         settings.camera = options.camera;
         settings.shaderDirectory = options.shaderDirectory;
+        settings.kernel = options.kernel;
         createRenderer(renderer, context, scene, settings);
         createHeadlessTarget(target, context, renderer, options.tileSide);
         if (options.benchFrames > 0) {

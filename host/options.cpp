@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 namespace {
@@ -54,6 +55,30 @@ glm::dvec3 parseVector(const std::string& flag, const std::string& text) {
     return {values[0], values[1], values[2]};
 }
 
+// One of names' values by its name; the message lists them ("grid, stratified or r2").
+template <typename T>
+T parseChoice(const std::string& flag, const std::string& text, const ChoiceNames<T>& names) {
+    std::string expected;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (names[i].first == text) return names[i].second;
+        expected += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + std::string(names[i].first);
+    }
+    throw UsageError(flag + " expects " + expected + ", got '" + text + "'");
+}
+
+// Parses one of the kernel's method and precision flags into kernel; false if arg is none.
+bool parseKernelOption(const std::string& arg, const std::function<const std::string&()>& value,
+                       KernelChoices& kernel) {
+    if (arg == "--sampler") kernel.sampler = parseChoice(arg, value(), samplerNames());
+    else if (arg == "--seed") kernel.seed = parseCount(arg, value(), 0, 4294967295u);
+    else if (arg == "--precision") kernel.precision = parseChoice(arg, value(), precisionNames());
+    else if (arg == "--sphere-test") kernel.sphereTest = parseChoice(arg, value(), sphereTestNames());
+    else if (arg == "--triangle-test") kernel.triangleTest = parseChoice(arg, value(), triangleTestNames());
+    else if (arg == "--offset") kernel.offset = parseChoice(arg, value(), rayOffsetNames());
+    else return false;
+    return true;
+}
+
 } // namespace
 
 std::string usageText() {
@@ -63,7 +88,18 @@ std::string usageText() {
            "  -o, --output FILE     render headless and write a PNG\n"
            "  --width W             image width in pixels (default 640)\n"
            "  --height H            image height in pixels (default 480)\n"
-           "  --spp N               samples per pixel, stratified (default 1: pixel centre)\n"
+           "  --spp N               samples per pixel (default 1: the pixel centre)\n"
+           "  --sampler grid|stratified|r2  sample positions for --spp > 1 (default r2: low\n"
+           "                        discrepancy, and sample s does not depend on N)\n"
+           "  --seed N              varies the stratified jitter and the r2 rotation (default 0)\n"
+           "  --precision fp32|fp64  geometry arithmetic in float or double (default fp32;\n"
+           "                        fp64 needs a device with shaderFloat64)\n"
+           "  --sphere-test naive|stable  ray/sphere test: textbook quadratic, or Ray\n"
+           "                        Tracing Gems ch. 7 (default stable)\n"
+           "  --triangle-test mt|watertight  ray/triangle test: Moller-Trumbore, or Woop,\n"
+           "                        Benthin and Wald 2013 (default watertight)\n"
+           "  --offset fixed|scaled  secondary-ray origins: 1e-4 along the normal, or\n"
+           "                        Waechter-Binder scale-relative (default scaled)\n"
            "  --depth D             reflection bounces after the primary hit, 0 to " +
            std::to_string(MAX_DEPTH) +
            " (default 5)\n"
@@ -164,6 +200,7 @@ Options parseOptions(int argc, const char* const* argv) {
             options.forceWindow = true;
         } else if (arg == "--redraw-continuously") {
             options.redrawContinuously = true;
+        } else if (parseKernelOption(arg, value, options.kernel)) {
         } else if (arg.size() > 1 && arg[0] == '-') {
             throw UsageError("unknown option '" + arg + "' (see --help)");
         } else if (options.scenePath.empty()) {

@@ -3,6 +3,7 @@
 
 #include "bvh.h"
 #include "camera_controller.h"
+#include "kernel_choices.h"
 
 #include <glm/glm.hpp>
 
@@ -36,6 +37,7 @@ struct Options {
     std::filesystem::path shaderDirectory; // --shader-dir: compile (and watch) these sources
     std::filesystem::path dumpShadersTo;   // --dump-shaders DIR: write the embedded sources, exit
     std::uint32_t benchWindowFrames = 0;   // --bench-window N: time N progressive frames, exit
+    KernelChoices kernel; // --sampler, --seed, --precision, --sphere-test, --triangle-test, --offset
 };
 
 // A command line that does not make sense; what() is the message for the user.

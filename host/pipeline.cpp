@@ -10,17 +10,32 @@
 #include <glslang/build_info.h>
 
 #include <cstddef>
+#include <iterator>
 #include <string>
 
-namespace {
+// Hashed as bytes for the pipeline cache's key: no padding may hide in it.
+static_assert(sizeof(TraceSpecialization) == 9 * sizeof(std::uint32_t));
+
+std::string precisionPreamble(Precision precision) {
+    return precision == Precision::Fp64 ? "#define RT_FP64 1\n" : "";
+}
+
+void applyKernelChoices(TraceSpecialization& specialization, const KernelChoices& choices) {
+    specialization.sampler = static_cast<std::uint32_t>(choices.sampler);
+    specialization.stableSphereTest = choices.sphereTest == SphereTest::Stable;
+    specialization.watertightTriangles = choices.triangleTest == TriangleTest::Watertight;
+    specialization.scaledRayOffset = choices.offset == RayOffset::Scaled;
+}
 
 // Everything that decides the SPIR-V: the compiler's version, how it is called (bump
-// the recipe when shader_compiler.cpp's settings change) and every embedded source.
-std::uint64_t traceSourceKey() {
+// the recipe when shader_compiler.cpp's settings change), the preamble that selects
+// the precision, and every embedded source.
+std::uint64_t traceSourceKey(Precision precision) {
     const std::string recipe = "trace.comp; glslang " + std::to_string(GLSLANG_VERSION_MAJOR) +
                                "." + std::to_string(GLSLANG_VERSION_MINOR) + "." +
                                std::to_string(GLSLANG_VERSION_PATCH) +
-                               "; vulkan1.2 spv1.5 optimized; v1";
+                               "; vulkan1.2 spv1.5 optimized; v1; preamble: " +
+                               precisionPreamble(precision);
     std::uint64_t key = hashBytes(recipe.data(), recipe.size());
     for (const auto& [name, text] : embeddedShaderSources()) {
         key = hashBytes(name.data(), name.size() + 1,
@@ -29,6 +44,8 @@ std::uint64_t traceSourceKey() {
     }
     return key;
 }
+
+namespace {
 
 // Fills result step by step; the caller destroys what was made if a step throws.
 void buildTracePipeline(TracePipeline& result, const Context& context,
@@ -66,12 +83,20 @@ void buildTracePipeline(TracePipeline& result, const Context& context,
     pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     pipelineInfo.stage.module = module;
     pipelineInfo.stage.pName = "main";
+    using S = TraceSpecialization;
     const VkSpecializationMapEntry specializationEntries[] = {
-        {SPEC_USE_HIERARCHY, offsetof(TraceSpecialization, useHierarchy), sizeof(VkBool32)},
-        {SPEC_HAS_SPHERES, offsetof(TraceSpecialization, hasSpheres), sizeof(VkBool32)},
-        {SPEC_HAS_TRIANGLES, offsetof(TraceSpecialization, hasTriangles), sizeof(VkBool32)}};
-    const VkSpecializationInfo specializationInfo{3, specializationEntries, sizeof(specialization),
-                                                 &specialization};
+        {SPEC_USE_HIERARCHY, offsetof(S, useHierarchy), sizeof(VkBool32)},
+        {SPEC_HAS_SPHERES, offsetof(S, hasSpheres), sizeof(VkBool32)},
+        {SPEC_HAS_TRIANGLES, offsetof(S, hasTriangles), sizeof(VkBool32)},
+        {SPEC_SAMPLER, offsetof(S, sampler), sizeof(std::uint32_t)},
+        {SPEC_STABLE_SPHERE_TEST, offsetof(S, stableSphereTest), sizeof(VkBool32)},
+        {SPEC_WATERTIGHT_TRIANGLES, offsetof(S, watertightTriangles), sizeof(VkBool32)},
+        {SPEC_SCALED_RAY_OFFSET, offsetof(S, scaledRayOffset), sizeof(VkBool32)},
+        {SPEC_HAS_MIRRORS, offsetof(S, hasMirrors), sizeof(VkBool32)},
+        {SPEC_HAS_SPECULAR, offsetof(S, hasSpecular), sizeof(VkBool32)}};
+    const VkSpecializationInfo specializationInfo{
+        static_cast<std::uint32_t>(std::size(specializationEntries)), specializationEntries,
+        sizeof(specialization), &specialization};
     pipelineInfo.stage.pSpecializationInfo = &specializationInfo;
     pipelineInfo.layout = result.layout;
     VkResult created = vkCreateComputePipelines(context.device, cache, 1, &pipelineInfo, nullptr,
@@ -97,17 +122,19 @@ TracePipeline createTracePipeline(const Context& context, const std::vector<std:
 
 TracePipeline loadTracePipeline(const Context& context,
                                 const std::filesystem::path& cacheDirectory,
-                                TraceSpecialization specialization) {
-    const std::uint64_t sourceKey = traceSourceKey();
+                                TraceSpecialization specialization, Precision precision) {
+    const std::uint64_t sourceKey = traceSourceKey(precision);
     std::vector<std::uint32_t> spirv;
     if (std::optional<std::vector<std::uint32_t>> cached =
             loadCachedSpirv(cacheDirectory, sourceKey)) {
         spirv = std::move(*cached);
     } else {
-        spirv = compileComputeShader("trace.comp", embeddedShaderLoader());
+        spirv = compileComputeShader("trace.comp", embeddedShaderLoader(),
+                                     precisionPreamble(precision));
         storeCachedSpirv(cacheDirectory, sourceKey, spirv);
     }
-    // One driver cache per specialization, as each compiles to different code.
+    // One driver cache per specialization, as each compiles to different code (the
+    // struct has no padding: its bytes are its values).
     const std::uint64_t spirvHash = hashBytes(spirv.data(), spirv.size() * sizeof(std::uint32_t));
     PipelineCache cache = openPipelineCache(
         context, cacheDirectory, hashBytes(&specialization, sizeof(specialization), spirvHash));

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <regex>
+#include <stdexcept>
 
 namespace {
 
@@ -65,7 +66,7 @@ gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t tileX, s
     params.image = glm::uvec4(settings.width, settings.height, settings.samplesPerPixel,
                               std::min<std::uint32_t>(settings.depth, MAX_DEPTH));
     params.counts = glm::uvec4(renderer.scene.sphereCount, renderer.scene.triangleCount,
-                               renderer.scene.lightCount, 0);
+                               renderer.scene.lightCount, settings.kernel.seed);
     params.tile = glm::uvec4(tileX, tileY, samples.first, samples.count);
     return params;
 }
@@ -73,8 +74,8 @@ gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t tileX, s
 // Packs the scene in the hierarchy's leaf order, keeping the hierarchy itself only when
 // it pays (settings.acceleration), and says which on stderr. The leaf order is used
 // either way, so both paths see the same primitive order and break ties alike.
-PackedScene packWithHierarchy(const Scene& scene, Acceleration acceleration) {
-    PackedScene packed = packScene(scene);
+PackedScene packWithHierarchy(const Scene& scene, Acceleration acceleration, Precision precision) {
+    PackedScene packed = packScene(scene, precision);
     const auto start = std::chrono::steady_clock::now();
     Bvh bvh = buildBvh(primitiveBounds(packed));
     const double buildMs =
@@ -93,21 +94,42 @@ PackedScene packWithHierarchy(const Scene& scene, Acceleration acceleration) {
 
 } // namespace
 
+TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderSettings& settings) {
+    TraceSpecialization specialization;
+    specialization.useHierarchy = !packed.bvhNodes.empty();
+    specialization.hasSpheres = !packed.spheres.empty();
+    specialization.hasTriangles = !packed.triangleVertices.empty();
+    // Spheres and vertices only refer to materials in the list, so a ks > 0 that no
+    // primitive uses is impossible; the check is on the float values the kernel reads.
+    const bool anySpecular =
+        std::any_of(packed.materials.begin(), packed.materials.end(), [](const gpu::GpuMaterial& m) {
+            return m.specular.x > 0.0f || m.specular.y > 0.0f || m.specular.z > 0.0f;
+        });
+    specialization.hasSpecular = anySpecular;
+    specialization.hasMirrors = anySpecular && settings.depth > 0;
+    applyKernelChoices(specialization, settings.kernel);
+    return specialization;
+}
+
 void createRenderer(Renderer& renderer, const Context& context, const Scene& scene,
                     const RenderSettings& settings) {
     renderer.settings = settings;
-    renderer.scene = uploadScene(context, packWithHierarchy(scene, settings.acceleration));
-    TraceSpecialization specialization;
-    specialization.useHierarchy = renderer.scene.bvhNodeCount > 0;
-    specialization.hasSpheres = renderer.scene.sphereCount > 0;
-    specialization.hasTriangles = renderer.scene.triangleCount > 0;
+    const Precision precision = settings.kernel.precision;
+    if (precision == Precision::Fp64 && !context.float64Enabled)
+        throw std::logic_error("--precision fp64, but the device was created without shaderFloat64 "
+                               "(createDevice needFloat64)");
+    PackedScene packed = packWithHierarchy(scene, settings.acceleration, precision);
+    const TraceSpecialization specialization = traceSpecialization(packed, settings);
+    renderer.scene = uploadScene(context, packed);
+    packed = PackedScene{}; // the GPU holds it now
     if (settings.shaderDirectory.empty()) {
-        renderer.pipeline = loadTracePipeline(context, settings.cacheDirectory, specialization);
+        renderer.pipeline = loadTracePipeline(context, settings.cacheDirectory, specialization, precision);
     } else {
         // The user's sources change under us, so neither SPIR-V nor the driver's cache is kept.
         std::vector<std::uint32_t> spirv;
         try {
-            spirv = compileComputeShader("trace.comp", directoryShaderLoader(settings.shaderDirectory));
+            spirv = compileComputeShader("trace.comp", directoryShaderLoader(settings.shaderDirectory),
+                                         precisionPreamble(precision));
         } catch (const ShaderCompileError& error) {
             // glslang names files as included ("ERROR: shade.glsl:12: ..."); with the folder
             // in front, an editor or terminal can jump to the line.

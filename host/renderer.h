@@ -23,6 +23,7 @@ struct RenderSettings {
     glm::vec3 background{1.0f};
     double fovDegrees = 60.0;
     Acceleration acceleration = Acceleration::Auto; // --accel: hierarchy or every primitive
+    KernelChoices kernel; // --sampler, --seed, --precision and the method switches
     std::filesystem::path cacheDirectory; // shader and pipeline cache; empty: none (--no-cache)
     CameraPose camera;                    // the SPEC camera unless --camera-* moved it
     std::filesystem::path shaderDirectory; // --shader-dir: compile from here, uncached; empty: embedded
@@ -52,11 +53,16 @@ struct Renderer {
     RenderSettings settings;
 };
 
-// Compiles the kernel, uploads the scene and creates the output image. A shader that does
-// not compile throws ShaderCompileError (host/shader_compiler.h); the caller destroys
-// the partly created renderer.
+// Compiles the kernel, uploads the scene and creates the output image. The kernel is
+// specialised for the settings and for what the scene holds (traceSpecialization). A
+// shader that does not compile throws ShaderCompileError (host/shader_compiler.h); the
+// caller destroys the partly created renderer.
 void createRenderer(Renderer& renderer, const Context& context, const Scene& scene,
                     const RenderSettings& settings);
+
+// The specialization constants for this packed scene and these settings: its primitive
+// kinds, hierarchy, whether any material has ks > 0, and the method choices.
+TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderSettings& settings);
 
 // Recreates the output image at a new size (the window was resized).
 void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t width, std::uint32_t height);

@@ -64,11 +64,14 @@ struct PackedVertex {
     glm::vec4 position;
     glm::vec4 normal;
     std::uint32_t material;
+    std::uint32_t padding; // zero, so equal vertices have equal bytes
+    glm::dvec4 exactPosition; // fp64: the position in double; fp32: zero
 };
 
 } // namespace
 
-PackedScene packScene(const Scene& scene) {
+PackedScene packScene(const Scene& scene, Precision precision) {
+    const bool fp64 = precision == Precision::Fp64;
     PackedScene packed;
     packed.ambient = toVec4(scene.ambient);
     Deduplicator<gpu::GpuMaterial> materials(packed.materials);
@@ -76,6 +79,7 @@ PackedScene packScene(const Scene& scene) {
     for (const Sphere& sphere : scene.spheres) {
         packed.spheres.push_back(toVec4(sphere.center, sphere.radius));
         packed.sphereMaterials.push_back(materials.indexOf(toGpuMaterial(sphere.material)));
+        if (fp64) packed.spheres64.push_back(glm::dvec4(sphere.center, sphere.radius));
     }
 
     std::vector<PackedVertex> vertices;
@@ -86,6 +90,7 @@ PackedScene packScene(const Scene& scene) {
             packedVertex.position = toVec4(vertex.position);
             packedVertex.normal = toVec4(vertex.normal);
             packedVertex.material = materials.indexOf(toGpuMaterial(vertex.material));
+            if (fp64) packedVertex.exactPosition = glm::dvec4(vertex.position, 0.0);
             packed.triangleVertices.push_back(vertexIndices.indexOf(packedVertex));
         }
     }
@@ -96,6 +101,9 @@ PackedScene packScene(const Scene& scene) {
             glm::vec4(glm::vec3(vertex.position), std::bit_cast<float>(vertex.material)));
         packed.vertexNormals.insert(packed.vertexNormals.end(),
                                     {vertex.normal.x, vertex.normal.y, vertex.normal.z});
+        if (fp64)
+            packed.vertexPositions64.push_back(
+                glm::dvec4(glm::dvec3(vertex.exactPosition), double(vertex.material)));
     }
 
     for (const Light& light : scene.lights)
@@ -119,13 +127,50 @@ void appendBox(std::vector<float>& boxes, glm::vec3 lo, glm::vec3 hi) {
     boxes.insert(boxes.end(), {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z});
 }
 
+// The nearest float at or below (direction -1) or above (+1) each coordinate: a float box
+// that holds the double one.
+glm::vec3 roundOutward(glm::dvec3 v, float direction) {
+    glm::vec3 rounded(v);
+    for (int axis = 0; axis < 3; ++axis)
+        if ((double(rounded[axis]) - v[axis]) * direction < 0.0)
+            rounded[axis] = std::nextafter(rounded[axis], direction * INFINITY);
+    return rounded;
+}
+
+void appendBox(std::vector<float>& boxes, glm::dvec3 lo, glm::dvec3 hi) {
+    appendBox(boxes, roundOutward(lo, -1.0f), roundOutward(hi, 1.0f));
+}
+
 } // namespace
 
 std::uint32_t vertexMaterial(const PackedScene& packed, std::size_t v) {
     return std::bit_cast<std::uint32_t>(packed.vertexPositions.at(v).w);
 }
 
+// The fp64 boxes: the same margins, computed in double and rounded outward.
+PrimitiveBounds primitiveBounds64(const PackedScene& packed) {
+    PrimitiveBounds bounds;
+    bounds.sphereCount = std::uint32_t(packed.spheres64.size());
+    bounds.boxes.reserve(6 * (packed.spheres64.size() + packed.triangleVertices.size() / 3));
+    for (const glm::dvec4& sphere : packed.spheres64) {
+        glm::dvec3 center(sphere);
+        double magnitude =
+            std::max({std::abs(center.x), std::abs(center.y), std::abs(center.z)}) + sphere.w;
+        double reach = sphere.w + kSphereBoxMargin * magnitude;
+        appendBox(bounds.boxes, center - reach, center + reach);
+    }
+    for (std::size_t i = 0; i + 2 < packed.triangleVertices.size(); i += 3) {
+        glm::dvec3 a(packed.vertexPositions64[packed.triangleVertices[i]]);
+        glm::dvec3 b(packed.vertexPositions64[packed.triangleVertices[i + 1]]);
+        glm::dvec3 c(packed.vertexPositions64[packed.triangleVertices[i + 2]]);
+        appendBox(bounds.boxes, glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c)));
+    }
+    return bounds;
+}
+
 PrimitiveBounds primitiveBounds(const PackedScene& packed) {
+    if (!packed.spheres64.empty() || !packed.vertexPositions64.empty())
+        return primitiveBounds64(packed);
     PrimitiveBounds bounds;
     bounds.sphereCount = std::uint32_t(packed.spheres.size());
     bounds.boxes.reserve(6 * (packed.spheres.size() + packed.triangleVertices.size() / 3));
@@ -151,9 +196,11 @@ void applyLeafOrder(PackedScene& packed, const Bvh& bvh) {
         throw std::logic_error("applyLeafOrder: the hierarchy was built for another scene");
     std::vector<glm::vec4> spheres(packed.spheres.size());
     std::vector<std::uint32_t> sphereMaterials(packed.spheres.size());
+    std::vector<glm::dvec4> spheres64(packed.spheres64.size());
     for (std::size_t slot = 0; slot < spheres.size(); ++slot) {
         spheres[slot] = packed.spheres[bvh.sphereOrder[slot]];
         sphereMaterials[slot] = packed.sphereMaterials[bvh.sphereOrder[slot]];
+        if (!spheres64.empty()) spheres64[slot] = packed.spheres64[bvh.sphereOrder[slot]];
     }
     std::vector<std::uint32_t> triangleVertices(packed.triangleVertices.size());
     for (std::size_t slot = 0; slot < bvh.triangleOrder.size(); ++slot)
@@ -161,6 +208,7 @@ void applyLeafOrder(PackedScene& packed, const Bvh& bvh) {
             triangleVertices[3 * slot + k] =
                 packed.triangleVertices[3 * std::size_t(bvh.triangleOrder[slot]) + k];
     packed.spheres = std::move(spheres);
+    packed.spheres64 = std::move(spheres64);
     packed.sphereMaterials = std::move(sphereMaterials);
     packed.triangleVertices = std::move(triangleVertices);
 }
@@ -186,18 +234,23 @@ VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
 } // namespace
 
 GpuScene uploadScene(const Context& context, const PackedScene& packed) {
+    // fp64: the double arrays take the place of the float ones (shaders/precision.glsl).
+    const bool fp64 = !packed.spheres64.empty() || !packed.vertexPositions64.empty();
     const ArrayView arrays[] = {
-        view(BINDING_SPHERES, "spheres", packed.spheres),
+        fp64 ? view(BINDING_SPHERES, "spheres", packed.spheres64)
+             : view(BINDING_SPHERES, "spheres", packed.spheres),
         view(BINDING_SPHERE_MATERIALS, "sphere materials", packed.sphereMaterials),
         view(BINDING_TRIANGLES, "triangles", packed.triangleVertices),
-        view(BINDING_VERTEX_POSITIONS, "vertex positions", packed.vertexPositions),
+        fp64 ? view(BINDING_VERTEX_POSITIONS, "vertex positions", packed.vertexPositions64)
+             : view(BINDING_VERTEX_POSITIONS, "vertex positions", packed.vertexPositions),
         view(BINDING_VERTEX_NORMALS, "vertex normals", packed.vertexNormals),
         view(BINDING_MATERIALS, "materials", packed.materials),
         view(BINDING_LIGHTS, "lights", packed.lights),
         view(BINDING_BVH_NODES, "hierarchy nodes", packed.bvhNodes),
     };
-    const VkDeviceSize alignment =
-        std::max<VkDeviceSize>(16, context.properties.limits.minStorageBufferOffsetAlignment);
+    // A dvec4 array needs 32-byte alignment.
+    const VkDeviceSize alignment = std::max<VkDeviceSize>(
+        fp64 ? 32 : 16, context.properties.limits.minStorageBufferOffsetAlignment);
     const VkDeviceSize maxRange = context.properties.limits.maxStorageBufferRange;
 
     // Lay the arrays out one after another. An empty array still needs a valid

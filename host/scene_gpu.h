@@ -4,6 +4,7 @@
 #pragma once
 
 #include "bvh.h"
+#include "kernel_choices.h"
 #include "resources.h"
 #include "scene.h"
 #include "shared.h"
@@ -22,15 +23,21 @@ struct PackedScene {
     std::vector<gpu::GpuLight> lights;
     std::vector<gpu::GpuBvhNode> bvhNodes; // empty: the shader tests every primitive
     glm::vec4 ambient{0.0f};
+    // --precision fp64 only (else empty): the same spheres and vertex positions in double,
+    // which the GPU then gets instead of the float ones; a position's w is its material
+    // index as a double. Vertices are shared only when their doubles are equal.
+    std::vector<glm::dvec4> spheres64;
+    std::vector<glm::dvec4> vertexPositions64;
 };
 
 // Spheres and triangles in file order, materials and vertices shared; no hierarchy.
-PackedScene packScene(const Scene& scene);
+PackedScene packScene(const Scene& scene, Precision precision = Precision::Fp32);
 
 // The material index of vertex v, from its position's w.
 std::uint32_t vertexMaterial(const PackedScene& packed, std::size_t v);
 
-// The box of every sphere, then of every triangle, slightly enlarged (see scene_gpu.cpp).
+// The box of every sphere, then of every triangle, slightly enlarged (see scene_gpu.cpp);
+// from the doubles when the scene was packed for fp64, rounded outward to float.
 PrimitiveBounds primitiveBounds(const PackedScene& packed);
 
 // Stores the spheres (with their materials) and triangles in the hierarchy's leaf order,

@@ -46,7 +46,8 @@ class MemoryIncluder : public glslang::TShader::Includer {
 } // namespace
 
 std::vector<std::uint32_t> compileComputeShader(const std::string& mainFile,
-                                                const ShaderSourceLoader& load) {
+                                                const ShaderSourceLoader& load,
+                                                const std::string& preamble) {
     initializeGlslangOnce();
     std::optional<std::string> source = load(mainFile);
     if (!source) throw ShaderCompileError("shader source '" + mainFile + "' not found");
@@ -56,6 +57,7 @@ std::vector<std::uint32_t> compileComputeShader(const std::string& mainFile,
     const int length = static_cast<int>(source->size());
     const char* name = mainFile.c_str();
     shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
+    if (!preamble.empty()) shader.setPreamble(preamble.c_str());
     shader.setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan, 100);
     shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
     shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);

@@ -19,9 +19,11 @@ struct ShaderCompileError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// Compiles the compute shader mainFile, resolving #include "x" through load.
+// Compiles the compute shader mainFile, resolving #include "x" through load. preamble
+// (e.g. "#define RT_FP64 1\n") is seen before the source, without shifting its line numbers.
 std::vector<std::uint32_t> compileComputeShader(const std::string& mainFile,
-                                                const ShaderSourceLoader& load);
+                                                const ShaderSourceLoader& load,
+                                                const std::string& preamble = {});
 
 // A loader over the sources compiled into the binary.
 ShaderSourceLoader embeddedShaderLoader();

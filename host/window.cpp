@@ -292,7 +292,8 @@ void open(Viewer& viewer, const Options& options, const Scene& scene) {
     if (!extensions) throw std::runtime_error("Vulkan cannot present to this window system");
     createInstance(viewer.context, {extensions, extensions + extensionCount}, options.validate);
     VK_CHECK(glfwCreateWindowSurface(viewer.context.instance, viewer.window, nullptr, &viewer.surface));
-    createDevice(viewer.context, options.device, viewer.surface);
+    createDevice(viewer.context, options.device, viewer.surface,
+                 options.kernel.precision == Precision::Fp64);
 
     // The output starts at the requested size; the first swapchain adjusts it to the
     // framebuffer's size, should the window system have chosen another.
@@ -302,6 +303,7 @@ void open(Viewer& viewer, const Options& options, const Scene& scene) {
     settings.cacheDirectory = userCacheDirectory(options.useCache);
     settings.camera = viewer.camera;
     settings.shaderDirectory = options.shaderDirectory;
+    settings.kernel = options.kernel;
     settings.progressive = true;
     createRenderer(viewer.renderer, viewer.context, scene, settings);
 

@@ -7,23 +7,27 @@
 // A ray prepared for the slab test: 1/d per axis (+-inf where d is +-0), and for each of
 // the box's two planes per axis the t to use when the origin lies exactly in that plane.
 struct BoxRay {
-    vec3 origin;
-    vec3 invDirection;
-    vec3 inLoPlane; // -FLOAT_MAX where the min plane is the near one, +FLOAT_MAX where far
-    vec3 inHiPlane; // the opposite
+    rvec3 origin;
+    rvec3 invDirection;
+    rvec3 inLoPlane; // -FLOAT_MAX where the min plane is the near one, +FLOAT_MAX where far
+    rvec3 inHiPlane; // the opposite
 };
 
 BoxRay boxRay(Ray ray) {
-    vec3 inv = 1.0 / ray.direction;
-    bvec3 negative = lessThan(inv, vec3(0.0)); // -0 gives -inf: negative too
-    return BoxRay(ray.origin, inv, mix(vec3(-FLOAT_MAX), vec3(FLOAT_MAX), negative),
-                  mix(vec3(FLOAT_MAX), vec3(-FLOAT_MAX), negative));
+    rvec3 inv = 1.0 / ray.direction;
+    bvec3 negative = lessThan(inv, rvec3(0.0)); // -0 gives -inf: negative too
+    return BoxRay(ray.origin, inv, mix(rvec3(-FLOAT_MAX), rvec3(FLOAT_MAX), negative),
+                  mix(rvec3(FLOAT_MAX), rvec3(-FLOAT_MAX), negative));
 }
 
 // 1 + 2 gamma(3), gamma(n) = n eps / (1 - n eps), eps = 2^-24: the relative error bound
 // of the slab distances (plane - o) * (1/d), three roundings each, applied to the exit
-// distance (Ize 2013; Pharr, Jakob & Humphreys, pbrt-v3 section 3.9.2).
+// distance (Ize 2013; Pharr, Jakob & Humphreys, pbrt-v3 section 3.9.2). In fp64, eps = 2^-53.
+#ifdef RT_FP64
+const double SLAB_EXIT_SCALE = 1.0000000000000007LF;
+#else
 const float SLAB_EXIT_SCALE = 1.0000003576;
+#endif
 
 // Robust ray/box slab test of Ize, "Robust BVH Ray Traversal", JCGT 2(2), 2013: the entry
 // and exit distances are computed as (plane - origin) * (1/d) with correct rounding and the
@@ -34,18 +38,19 @@ const float SLAB_EXIT_SCALE = 1.0000003576;
 // lavapipe's min/max then drop the NaN and can make the box look missed. That case is
 // taken out before min/max: the ray then runs in the face's plane, which the closed box
 // includes, so that plane limits nothing. No NaN reaches min/max. Returns whether the
-// box is entered at some t in [0, tLimit] (scaled alike), and the entry t.
-bool hitBox(BoxRay ray, vec3 lo, vec3 hi, float tLimit, out float tEntry) {
-    precise vec3 toLo = lo - ray.origin;
-    precise vec3 toHi = hi - ray.origin;
-    precise vec3 tLo = toLo * ray.invDirection;
-    precise vec3 tHi = toHi * ray.invDirection;
-    tLo = mix(tLo, ray.inLoPlane, equal(toLo, vec3(0.0)));
-    tHi = mix(tHi, ray.inHiPlane, equal(toHi, vec3(0.0)));
-    vec3 tNear = min(tLo, tHi);
-    vec3 tFar = max(tLo, tHi);
+// box is entered at some t in [0, tLimit] (scaled alike), and the entry t. In fp64 the
+// float boxes (rounded outward by the host) are tested in double, exactly converted.
+bool hitBox(BoxRay ray, rvec3 lo, rvec3 hi, real tLimit, out real tEntry) {
+    precise rvec3 toLo = lo - ray.origin;
+    precise rvec3 toHi = hi - ray.origin;
+    precise rvec3 tLo = toLo * ray.invDirection;
+    precise rvec3 tHi = toHi * ray.invDirection;
+    tLo = mix(tLo, ray.inLoPlane, equal(toLo, rvec3(0.0)));
+    tHi = mix(tHi, ray.inHiPlane, equal(toHi, rvec3(0.0)));
+    rvec3 tNear = min(tLo, tHi);
+    rvec3 tFar = max(tLo, tHi);
     tEntry = max(max(tNear.x, tNear.y), max(tNear.z, 0.0));
-    float tExit = min(min(tFar.x, tFar.y), min(tFar.z, tLimit));
+    real tExit = min(min(tFar.x, tFar.y), min(tFar.z, tLimit));
     return tEntry <= tExit * SLAB_EXIT_SCALE;
 }
 
@@ -53,9 +58,18 @@ bool hitBox(BoxRay ray, vec3 lo, vec3 hi, float tLimit, out float tEntry) {
 uint nodeIndexField(GpuBvhNode node) { return floatBitsToUint(node.boundsMinAndIndex.w); }
 uint nodeCountField(GpuBvhNode node) { return floatBitsToUint(node.boundsMaxAndCount.w); }
 
-// The next float above a finite positive t (FLOAT_MAX gives +inf): a limit that lets a
-// primitive at exactly t through, for the tie rule below.
-float nextFloatUp(float t) { return uintBitsToFloat(floatBitsToUint(t) + 1u); }
+// The next real above a finite positive t (FLOAT_MAX gives +inf in fp32): a limit that
+// lets a primitive at exactly t through, for the tie rule below.
+#ifdef RT_FP64
+double nextRealUp(double t) {
+    uvec2 bits = unpackDouble2x32(t);
+    uint carry;
+    bits.x = uaddCarry(bits.x, 1u, carry);
+    return packDouble2x32(uvec2(bits.x, bits.y + carry));
+}
+#else
+float nextRealUp(float t) { return uintBitsToFloat(floatBitsToUint(t) + 1u); }
+#endif
 
 // The primitives of one leaf against the ray. Closest hit: equal distances go to the
 // lower (kind, index), spheres first, which is what the brute-force loops give (they take
@@ -66,26 +80,25 @@ bool intersectLeaf(Ray ray, ShearedRay sheared, GpuBvhNode leaf, bool anyHitMode
     uint first = nodeIndexField(leaf);
     uint count = nodeCountField(leaf);
     uint end = first + (count & BVH_COUNT_MASK);
-    float limit = anyHitMode ? hit.t : nextFloatUp(hit.t);
-    float t;
+    real limit = anyHitMode ? hit.t : nextRealUp(hit.t);
+    real t;
     if (sceneHasSpheres && (!sceneHasTriangles || (count & BVH_LEAF_SPHERES) != 0u)) {
         for (uint i = first; i < end; ++i) {
             if (!intersectSphere(ray, spheres[i], limit, t)) continue;
             if (anyHitMode) return true;
             if (t < hit.t || hit.kind == HIT_TRIANGLE || (hit.kind == HIT_SPHERE && i < hit.index)) {
-                hit = Hit(t, HIT_SPHERE, i, vec3(0.0));
-                limit = nextFloatUp(t);
+                hit = Hit(t, HIT_SPHERE, i, rvec3(0.0));
+                limit = nextRealUp(t);
             }
         }
     } else {
-        vec3 a, b, c, barycentric;
+        rvec3 barycentric;
         for (uint i = first; i < end; ++i) {
-            triangleCorners(i, a, b, c);
-            if (!intersectTriangle(sheared, a, b, c, limit, t, barycentric)) continue;
+            if (!intersectTriangle(ray, sheared, i, limit, t, barycentric)) continue;
             if (anyHitMode) return true;
             if (t < hit.t || (hit.kind == HIT_TRIANGLE && i < hit.index)) {
                 hit = Hit(t, HIT_TRIANGLE, i, barycentric);
-                limit = nextFloatUp(t);
+                limit = nextRealUp(t);
             }
         }
     }
@@ -108,7 +121,7 @@ bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
     ShearedRay sheared = shearRay(ray);
     BoxRay slabRay = boxRay(ray);
     uint stackNode[BVH_STACK_SIZE];
-    float stackEntry[BVH_STACK_SIZE];
+    real stackEntry[BVH_STACK_SIZE];
     uint stackSize = 0u;
     uint index = 0u;
     GpuBvhNode node = bvhNodes[0];
@@ -132,11 +145,11 @@ bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
             uint rightIndex = nodeIndexField(node);
             GpuBvhNode left = bvhNodes[leftIndex];
             GpuBvhNode right = bvhNodes[rightIndex];
-            float leftEntry, rightEntry;
-            bool hitLeft = hitBox(slabRay, left.boundsMinAndIndex.xyz, left.boundsMaxAndCount.xyz,
-                                  hit.t, leftEntry);
-            bool hitRight = hitBox(slabRay, right.boundsMinAndIndex.xyz,
-                                   right.boundsMaxAndCount.xyz, hit.t, rightEntry);
+            real leftEntry, rightEntry;
+            bool hitLeft = hitBox(slabRay, rvec3(left.boundsMinAndIndex.xyz),
+                                  rvec3(left.boundsMaxAndCount.xyz), hit.t, leftEntry);
+            bool hitRight = hitBox(slabRay, rvec3(right.boundsMinAndIndex.xyz),
+                                   rvec3(right.boundsMaxAndCount.xyz), hit.t, rightEntry);
             if (hitLeft && hitRight) {
                 bool rightFirst = rightEntry < leftEntry;
                 stackNode[stackSize] = rightFirst ? leftIndex : rightIndex;
@@ -159,14 +172,14 @@ bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
 // The nearest hit along the ray over every sphere and triangle.
 Hit closestHit(Ray ray) {
     if (!useHierarchy) return closestHitEveryPrimitive(ray);
-    Hit hit = Hit(FLOAT_MAX, HIT_NONE, 0u, vec3(0.0));
+    Hit hit = Hit(FLOAT_MAX, HIT_NONE, 0u, rvec3(0.0));
     traverseBvh(ray, false, hit);
     return hit;
 }
 
 // Whether anything lies on the ray with 0 < t < tMax (shadow rays); stops at the first hit.
-bool anyHit(Ray ray, float tMax) {
+bool anyHit(Ray ray, real tMax) {
     if (!useHierarchy) return anyHitEveryPrimitive(ray, tMax);
-    Hit hit = Hit(tMax, HIT_NONE, 0u, vec3(0.0));
+    Hit hit = Hit(tMax, HIT_NONE, 0u, rvec3(0.0));
     return traverseBvh(ray, true, hit);
 }

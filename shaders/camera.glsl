@@ -1,4 +1,4 @@
-// Primary rays (the SPEC's pinhole camera) and the sample positions inside a pixel.
+// Primary rays (the SPEC's pinhole camera); sample positions inside a pixel: sampling.glsl.
 //
 //            +y
 //             ^        image plane z = -1, eye at the origin looking down -z
@@ -13,8 +13,8 @@
 //   direction = normalize(x, y, -1)
 
 struct Ray {
-    vec3 origin;
-    vec3 direction; // unit length
+    rvec3 origin;    // real: float, or double with --precision fp64 (precision.glsl)
+    rvec3 direction; // unit length
 };
 
 // v rotated by the unit quaternion q (xyz vector part, w scalar part). For the identity
@@ -33,36 +33,4 @@ Ray cameraRay(uvec2 pixel, vec2 uv) {
                     1.0 - 2.0 * (float(pixel.y) + uv.y) / size.y);
     vec3 direction = rotateByQuaternion(params.cameraOrientation, vec3(ndc * params.camera.xy, -1.0));
     return Ray(params.cameraOrigin.xyz, normalize(direction));
-}
-
-// Integer hash "lowbias32" (Chris Wellons, hash-prospector): a well-mixed 32-bit permutation.
-uint hashUint(uint x) {
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
-
-// The most nearly square grid of exactly n cells: rows is the largest divisor of n that
-// is at most sqrt(n), so every cell has the same area (a prime n gives 1 x n strips).
-uvec2 stratumGrid(uint n) {
-    uint rows = uint(sqrt(float(n)));
-    while (rows * rows > n) rows--;
-    while ((rows + 1u) * (rows + 1u) <= n) rows++;
-    while (n % rows != 0u) rows--;
-    return uvec2(n / rows, rows); // (columns, rows)
-}
-
-// Offset (u, v) of sample s of n in a pixel: the centre for n == 1, otherwise stratified
-// jittered sampling, one sample per cell with a deterministic jitter hashed from (pixel, s).
-vec2 sampleOffset(uvec2 pixel, uint s, uint n) {
-    if (n <= 1u) return vec2(0.5);
-    uvec2 grid = stratumGrid(n);
-    uvec2 cell = uvec2(s % grid.x, s / grid.x);
-    uint h1 = hashUint(hashUint(hashUint(pixel.x) ^ pixel.y) ^ s);
-    uint h2 = hashUint(h1);
-    vec2 jitter = vec2(h1 >> 8, h2 >> 8) * (1.0 / 16777216.0); // 24 bits, in [0, 1)
-    return min((vec2(cell) + jitter) / vec2(grid), vec2(0.99999994)); // rounding may reach 1
 }

@@ -3,10 +3,10 @@
 
 // Everything shading needs about a hit point.
 struct SurfacePoint {
-    vec3 position;
-    vec3 magnitude;       // per coordinate, sum of |terms| that position was computed from
-    vec3 geometricNormal; // unit, either side: the side a new ray leaves on picks the sign
-    vec3 normal;          // unit shading normal, flipped to face the incoming ray
+    rvec3 position;
+    rvec3 magnitude;       // per coordinate, sum of |terms| that position was computed from
+    rvec3 geometricNormal; // unit, either side: the side a new ray leaves on picks the sign
+    rvec3 normal;          // unit shading normal, flipped to face the incoming ray
     vec3 kd;              // diffuse colour
     vec3 ks;              // specular colour, also the mirror weight
     float shininess;      // Phong exponent
@@ -14,8 +14,8 @@ struct SurfacePoint {
 
 // v scaled to unit length, or fallback when v is zero (normalize(0) is NaN on lavapipe);
 // dividing by the largest component first keeps tiny and huge vectors in range.
-vec3 normalizeOr(vec3 v, vec3 fallback) {
-    float m = max(abs(v.x), max(abs(v.y), abs(v.z)));
+rvec3 normalizeOr(rvec3 v, rvec3 fallback) {
+    real m = max(abs(v.x), max(abs(v.y), abs(v.z)));
     return m > 0.0 ? normalize(v / m) : fallback;
 }
 
@@ -24,8 +24,13 @@ vec3 vertexNormal(uint v) {
     return vec3(vertexNormals[3u * v], vertexNormals[3u * v + 1u], vertexNormals[3u * v + 2u]);
 }
 
-// The material of vertex v (its index rides in the position's w).
+// The material of vertex v: its index rides in the position's w, as the float's bits (fp32)
+// or as a double's exact integer value (fp64).
+#ifdef RT_FP64
+GpuMaterial vertexMaterial(uint v) { return materials[uint(vertexPositions[v].w)]; }
+#else
 GpuMaterial vertexMaterial(uint v) { return materials[floatBitsToUint(vertexPositions[v].w)]; }
+#endif
 
 // Position, normals and material at a hit. Sphere: N = (P - C) / r, with P projected back
 // onto the sphere; triangle: P, the vertex normals and the materials interpolated with
@@ -34,8 +39,8 @@ GpuMaterial vertexMaterial(uint v) { return materials[floatBitsToUint(vertexPosi
 SurfacePoint surfaceAt(Ray ray, Hit hit) {
     SurfacePoint s;
     if (sceneHasSpheres && (!sceneHasTriangles || hit.kind == HIT_SPHERE)) {
-        vec4 sphere = spheres[hit.index];
-        vec3 radial = normalizeOr(ray.origin + hit.t * ray.direction - sphere.xyz, -ray.direction);
+        rvec4 sphere = spheres[hit.index];
+        rvec3 radial = normalizeOr(ray.origin + hit.t * ray.direction - sphere.xyz, -ray.direction);
         s.position = sphere.xyz + sphere.w * radial;
         s.magnitude = abs(sphere.xyz) + sphere.w * abs(radial);
         s.geometricNormal = radial;
@@ -47,22 +52,23 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
     } else {
         uvec3 v = uvec3(triangleVertices[3u * hit.index], triangleVertices[3u * hit.index + 1u],
                         triangleVertices[3u * hit.index + 2u]);
-        vec3 w = hit.barycentric;
-        vec3 a = vertexPositions[v.x].xyz, b = vertexPositions[v.y].xyz, c = vertexPositions[v.z].xyz;
+        rvec3 w = hit.barycentric;
+        rvec3 a = vertexPositions[v.x].xyz, b = vertexPositions[v.y].xyz, c = vertexPositions[v.z].xyz;
         // From the barycentrics rather than o + t d: its error scales with the vertices only.
         s.position = w.x * a + w.y * b + w.z * c;
         s.magnitude = w.x * abs(a) + w.y * abs(b) + w.z * abs(c);
         s.geometricNormal = normalizeOr(cross(b - a, c - a), -ray.direction);
-        vec3 n = w.x * vertexNormal(v.x) + w.y * vertexNormal(v.y) + w.z * vertexNormal(v.z);
+        rvec3 n = w.x * vertexNormal(v.x) + w.y * vertexNormal(v.y) + w.z * vertexNormal(v.z);
         s.normal = normalizeOr(n, s.geometricNormal);
         GpuMaterial ma = vertexMaterial(v.x);
         GpuMaterial mb = vertexMaterial(v.y);
         GpuMaterial mc = vertexMaterial(v.z);
-        vec4 kdShininess = w.x * ma.diffuseShininess + w.y * mb.diffuseShininess +
-                           w.z * mc.diffuseShininess;
+        vec3 wf = vec3(w); // colours stay float
+        vec4 kdShininess = wf.x * ma.diffuseShininess + wf.y * mb.diffuseShininess +
+                           wf.z * mc.diffuseShininess;
         s.kd = kdShininess.xyz;
         s.shininess = kdShininess.w;
-        s.ks = w.x * ma.specular.xyz + w.y * mb.specular.xyz + w.z * mc.specular.xyz;
+        s.ks = wf.x * ma.specular.xyz + wf.y * mb.specular.xyz + wf.z * mc.specular.xyz;
     }
     if (dot(s.normal, ray.direction) > 0.0) s.normal = -s.normal;
     return s;
@@ -70,37 +76,45 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
 
 // A ray from the surface point in direction d (unit), its origin offset to the side of the
 // surface d leaves on, so it cannot hit the surface it starts from.
-Ray leavingRay(SurfacePoint s, vec3 d) {
-    vec3 side = dot(s.geometricNormal, d) > 0.0 ? s.geometricNormal : -s.geometricNormal;
+Ray leavingRay(SurfacePoint s, rvec3 d) {
+    rvec3 side = dot(s.geometricNormal, d) > 0.0 ? s.geometricNormal : -s.geometricNormal;
     return Ray(offsetRayOrigin(s.position, side, s.magnitude), d);
 }
 
 // Whether any surface lies strictly between the point and the light (unit direction l):
 // an any-hit shadow ray from the offset origin, limited to the distance to the light.
-bool inShadow(SurfacePoint s, vec3 lightPosition, vec3 l) {
+bool inShadow(SurfacePoint s, rvec3 lightPosition, rvec3 l) {
     Ray ray = leavingRay(s, l);
-    vec3 toLight = lightPosition - ray.origin;
-    float lightDistance = length(toLight);
+    rvec3 toLight = lightPosition - ray.origin;
+    real lightDistance = length(toLight);
     ray.direction = toLight / lightDistance;
     return anyHit(ray, lightDistance);
 }
 
 // Local Phong colour seen along direction -view: ambient once, then per unshadowed light
 // in front of the surface Lc * (kd dot(N,L) + ks max(dot(R,V),0)^shininess).
-vec3 shadePhong(SurfacePoint s, vec3 view) {
+// The highlight is compiled out when no material has ks > 0 (sceneHasSpecular, trace.comp;
+// it would add exactly 0).
+vec3 shadePhong(SurfacePoint s, rvec3 view) {
     vec3 colour = params.ambient.rgb;
     for (uint i = 0u; i < params.counts.z; ++i) {
         GpuLight light = lights[i];
+        rvec3 lightPosition = light.position.xyz;
         // A light exactly at the point has no direction: l = 0 skips it below.
-        vec3 l = normalizeOr(light.position.xyz - s.position, vec3(0.0));
-        float nDotL = dot(s.normal, l);
+        rvec3 l = normalizeOr(lightPosition - s.position, rvec3(0.0));
+        real nDotL = dot(s.normal, l);
         if (nDotL <= 0.0) continue;
-        if (inShadow(s, light.position.xyz, l)) continue;
-        vec3 r = 2.0 * nDotL * s.normal - l;
-        float rDotV = dot(r, view);
+        if (inShadow(s, lightPosition, l)) continue;
+        vec3 diffuse = s.kd * float(nDotL);
+        if (!sceneHasSpecular) {
+            colour += light.color.rgb * diffuse;
+            continue;
+        }
+        rvec3 r = 2.0 * nDotL * s.normal - l;
+        float rDotV = float(dot(r, view));
         // pow(x, 0) is 1 for x > 0; the test keeps pow away from 0 and negative bases.
         vec3 specular = rDotV > 0.0 ? s.ks * pow(rDotV, s.shininess) : vec3(0.0);
-        colour += light.color.rgb * (s.kd * nDotL + specular);
+        colour += light.color.rgb * (diffuse + specular);
     }
     return colour;
 }

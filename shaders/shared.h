@@ -42,10 +42,20 @@ using uint = std::uint32_t;
 #define BINDING_ACCUMULATION 9     // vec4 per pixel, row major: the window's running sum of samples
 #define BINDING_COUNT 10
 
-// Specialization constant ids (host/pipeline.h, TraceSpecialization), all bool.
+// Specialization constant ids (host/pipeline.h, TraceSpecialization): bool unless marked uint.
 #define SPEC_USE_HIERARCHY 0 // walk the BVH (else test every primitive: scenes too small for one)
 #define SPEC_HAS_SPHERES 1   // the scene holds spheres (else their code is compiled out)
 #define SPEC_HAS_TRIANGLES 2 // the scene holds triangles (likewise)
+// The method choices of the command line (host/kernel_choices.h), and more of the scene.
+#define SPEC_SAMPLER 3             // uint, SAMPLER_*: sample positions inside a pixel (--sampler)
+#define SPEC_STABLE_SPHERE_TEST 4  // bool: Ray Tracing Gems ch. 7, else the textbook quadratic
+#define SPEC_WATERTIGHT_TRIANGLES 5 // bool: Woop et al. 2013, else Moller-Trumbore
+#define SPEC_SCALED_RAY_OFFSET 6   // bool: Waechter-Binder, scale-relative; else a fixed 1e-4
+#define SPEC_HAS_MIRRORS 7         // bool: some material has ks > 0 and --depth > 0
+#define SPEC_HAS_SPECULAR 8        // bool: some material has ks > 0 (else no Phong highlight)
+#define SAMPLER_GRID 0u
+#define SAMPLER_STRATIFIED 1u
+#define SAMPLER_R2 2u
 
 // The bounding volume hierarchy (host/bvh.cpp builds it, shaders/bvh.glsl walks it).
 // Traversal keeps the far child of each interior node on a fixed stack of this many
@@ -88,7 +98,7 @@ struct GpuFrameParams {
     vec4 cameraOrigin;      // the eye in world space: xyz, w unused (0 for the SPEC camera)
     vec4 cameraOrientation; // unit quaternion xyzw, camera space to world (0,0,0,1 for the SPEC camera)
     uvec4 image;     // x: width, y: height, z: samples per pixel n (sampleOffset's n), w: reflection depth
-    uvec4 counts;    // x: spheres, y: triangles, z: lights, w unused
+    uvec4 counts;    // x: spheres, y: triangles, z: lights, w: sampling seed (--seed)
     // xy: first pixel of this dispatch. zw: the samples it adds: z the index of the first,
     // w how many; w == 0 traces all image.z samples in one pass (headless). With w > 0
     // (the window's progressive view) the sum of samples 0..z-1 is read from and the sum

@@ -6,6 +6,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared.h"
+#include "precision.glsl"
 
 layout(local_size_x = WORKGROUP_SIZE_X, local_size_y = WORKGROUP_SIZE_Y, local_size_z = 1) in;
 
@@ -19,6 +20,17 @@ layout(constant_id = SPEC_USE_HIERARCHY) const bool useHierarchy = false;
 // Whether the scene holds spheres, and triangles.
 layout(constant_id = SPEC_HAS_SPHERES) const bool sceneHasSpheres = true;
 layout(constant_id = SPEC_HAS_TRIANGLES) const bool sceneHasTriangles = true;
+// Whether some material has ks > 0 and --depth > 0 (else no reflection loop), and whether
+// some material has ks > 0 (else no highlight).
+layout(constant_id = SPEC_HAS_MIRRORS) const bool sceneHasMirrors = true;
+layout(constant_id = SPEC_HAS_SPECULAR) const bool sceneHasSpecular = true;
+
+// The method choices of the command line (host/kernel_choices.h); the defaults are the
+// robust methods, and the unchosen method is compiled out.
+layout(constant_id = SPEC_SAMPLER) const uint samplerKind = SAMPLER_R2;
+layout(constant_id = SPEC_STABLE_SPHERE_TEST) const bool stableSphereTest = true;
+layout(constant_id = SPEC_WATERTIGHT_TRIANGLES) const bool watertightTriangles = true;
+layout(constant_id = SPEC_SCALED_RAY_OFFSET) const bool scaledRayOffset = true;
 
 // Camera, counts, image size, samples and depth for this dispatch (see GpuFrameParams).
 layout(push_constant) uniform FrameParamsBlock {
@@ -30,14 +42,15 @@ layout(set = 0, binding = BINDING_OUTPUT_IMAGE, rgba8) uniform writeonly image2D
 
 // Scene arrays. Their lengths are params.counts, never .length(): an empty array is bound
 // to a small dummy buffer.
-// Spheres: centre in xyz, radius in w.
-layout(set = 0, binding = BINDING_SPHERES, std430) readonly buffer SphereBuffer { vec4 spheres[]; };
+// Spheres: centre in xyz, radius in w (doubles in fp64, see precision.glsl).
+layout(set = 0, binding = BINDING_SPHERES, std430) readonly buffer SphereBuffer { rvec4 spheres[]; };
 // Per sphere, the index of its material in materials[].
 layout(set = 0, binding = BINDING_SPHERE_MATERIALS, std430) readonly buffer SphereMaterialBuffer { uint sphereMaterials[]; };
 // Per triangle, three consecutive indices into the vertex arrays.
 layout(set = 0, binding = BINDING_TRIANGLES, std430) readonly buffer TriangleBuffer { uint triangleVertices[]; };
-// Per vertex, its position in xyz and the index of its material in materials[] in w's bits.
-layout(set = 0, binding = BINDING_VERTEX_POSITIONS, std430) readonly buffer PositionBuffer { vec4 vertexPositions[]; };
+// Per vertex, its position in xyz and the index of its material in materials[] in w: the
+// float's bits, or in fp64 a double holding the index (shade.glsl, vertexMaterial).
+layout(set = 0, binding = BINDING_VERTEX_POSITIONS, std430) readonly buffer PositionBuffer { rvec4 vertexPositions[]; };
 // Per vertex, its normal as the scene file gives it (maybe unnormalised or zero): three
 // floats, no padding (a vec4 would waste a quarter; see vertexNormal in shade.glsl).
 layout(set = 0, binding = BINDING_VERTEX_NORMALS, std430) readonly buffer NormalBuffer { float vertexNormals[]; };
@@ -52,6 +65,7 @@ layout(set = 0, binding = BINDING_BVH_NODES, std430) readonly buffer BvhNodeBuff
 layout(set = 0, binding = BINDING_ACCUMULATION, std430) buffer AccumulationBuffer { vec4 accumulation[]; };
 
 #include "camera.glsl"
+#include "sampling.glsl"
 #include "ray_offset.glsl"
 #include "intersect.glsl"
 #include "bvh.glsl"
@@ -69,7 +83,8 @@ vec3 traceRay(Ray ray) {
         if (hit.kind == HIT_NONE) return colour + throughput * params.background.rgb;
         SurfacePoint s = surfaceAt(ray, hit);
         vec3 local = shadePhong(s, -ray.direction);
-        if (all(equal(s.ks, vec3(0.0))) || bounce >= maxBounces) return colour + throughput * local;
+        if (!sceneHasMirrors || all(equal(s.ks, vec3(0.0))) || bounce >= maxBounces)
+            return colour + throughput * local;
         colour += throughput * (1.0 - s.ks) * local;
         throughput *= s.ks;
         // Nothing further can contribute: same result, fewer rays.

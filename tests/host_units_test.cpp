@@ -1,4 +1,8 @@
-// Host pieces that need no GPU: the runtime shader compiler and the scene packer.
+// Host pieces that need no GPU: the runtime shader compiler, the scene packer, the kernel's
+// variants (precision, specialization) and their cache keys.
+#include "context.h"
+#include "pipeline.h"
+#include "renderer.h"
 #include "scene_gpu.h"
 #include "shader_compiler.h"
 
@@ -111,6 +115,129 @@ TEST(ScenePacking, AnEmptySceneHoldsNothing) {
     EXPECT_TRUE(packed.vertexPositions.empty());
     EXPECT_TRUE(packed.materials.empty());
     EXPECT_TRUE(packed.lights.empty());
+}
+
+// ---- Kernel variants ----
+
+// Whether SPIR-V declares a capability (OpCapability: opcode 17, two words).
+bool declaresCapability(const std::vector<std::uint32_t>& spirv, std::uint32_t capability) {
+    for (std::size_t i = 5; i < spirv.size();) {
+        std::uint32_t words = spirv[i] >> 16, opcode = spirv[i] & 0xffffu;
+        if (opcode == 17 && i + 1 < spirv.size() && spirv[i + 1] == capability) return true;
+        if (words == 0) break;
+        i += words;
+    }
+    return false;
+}
+
+constexpr std::uint32_t kCapabilityFloat64 = 10;
+
+TEST(KernelVariants, Fp64PreambleCompilesTheKernelInDouble) {
+    std::vector<std::uint32_t> fp32 = compileComputeShader("trace.comp", embeddedShaderLoader(),
+                                                           precisionPreamble(Precision::Fp32));
+    std::vector<std::uint32_t> fp64 = compileComputeShader("trace.comp", embeddedShaderLoader(),
+                                                           precisionPreamble(Precision::Fp64));
+    EXPECT_FALSE(declaresCapability(fp32, kCapabilityFloat64));
+    EXPECT_TRUE(declaresCapability(fp64, kCapabilityFloat64));
+}
+
+TEST(KernelVariants, PrecisionsNeverShareACachedKernel) {
+    EXPECT_NE(traceSourceKey(Precision::Fp32), traceSourceKey(Precision::Fp64));
+    EXPECT_EQ(traceSourceKey(Precision::Fp64), traceSourceKey(Precision::Fp64));
+}
+
+TEST(KernelVariants, Fp64OnADeviceWithoutDoublesFailsWithAClearMessage) {
+    VkPhysicalDeviceFeatures features{};
+    try {
+        requireFloat64(features, "Some GPU");
+        FAIL() << "a device without shaderFloat64 was accepted";
+    } catch (const std::runtime_error& error) {
+        std::string message = error.what();
+        EXPECT_NE(message.find("--precision fp64 needs the shaderFloat64 feature"), std::string::npos);
+        EXPECT_NE(message.find("Some GPU does not have"), std::string::npos) << message;
+        EXPECT_NE(message.find("--precision fp32"), std::string::npos) << message;
+    }
+    features.shaderFloat64 = VK_TRUE;
+    EXPECT_NO_THROW(requireFloat64(features, "Some GPU"));
+}
+
+Scene sceneWith(std::vector<Material> materials, std::size_t lights) {
+    Scene scene;
+    for (std::size_t i = 0; i < materials.size(); ++i)
+        scene.spheres.push_back({glm::dvec3(double(i), 0, -3), 0.5, materials[i]});
+    for (std::size_t i = 0; i < lights; ++i) scene.lights.push_back({glm::dvec3(0, 5, 0), glm::dvec3(1)});
+    return scene;
+}
+
+TEST(KernelVariants, SpecialisedForWhatTheSceneHolds) {
+    Material matte{glm::dvec3(0.5), glm::dvec3(0.0), 10}, shiny{glm::dvec3(0.5), glm::dvec3(0, 0, 0.1), 10};
+    RenderSettings settings;
+    TraceSpecialization plain = traceSpecialization(packScene(sceneWith({matte, matte}, 3)), settings);
+    EXPECT_FALSE(plain.hasMirrors);
+    EXPECT_FALSE(plain.hasSpecular);
+    EXPECT_TRUE(plain.hasSpheres);
+    EXPECT_FALSE(plain.hasTriangles);
+    TraceSpecialization mirror = traceSpecialization(packScene(sceneWith({matte, shiny}, 1)), settings);
+    EXPECT_TRUE(mirror.hasMirrors);
+    EXPECT_TRUE(mirror.hasSpecular);
+    settings.depth = 0; // no bounces: highlights, but no reflection loop
+    TraceSpecialization flat = traceSpecialization(packScene(sceneWith({matte, shiny}, 1)), settings);
+    EXPECT_FALSE(flat.hasMirrors);
+    EXPECT_TRUE(flat.hasSpecular);
+}
+
+TEST(KernelVariants, MethodChoicesBecomeSpecializationConstants) {
+    RenderSettings settings;
+    TraceSpecialization robust = traceSpecialization(packScene(sceneWith({}, 1)), settings);
+    EXPECT_EQ(robust.sampler, SAMPLER_R2);
+    EXPECT_TRUE(robust.stableSphereTest && robust.watertightTriangles && robust.scaledRayOffset);
+    settings.kernel = {Sampler::Stratified, 3, Precision::Fp64, SphereTest::Naive,
+                       TriangleTest::MollerTrumbore, RayOffset::Fixed};
+    TraceSpecialization naive = traceSpecialization(packScene(sceneWith({}, 1)), settings);
+    EXPECT_EQ(naive.sampler, SAMPLER_STRATIFIED);
+    EXPECT_FALSE(naive.stableSphereTest || naive.watertightTriangles || naive.scaledRayOffset);
+}
+
+TEST(ScenePacking, Fp64KeepsGeometryInDoubleAndItsBoxesHoldIt) {
+    // Two vertices 1e-9 apart at x = 1e5 are one float but two doubles.
+    Material m = material(0.5);
+    Scene scene;
+    scene.spheres.push_back({glm::dvec3(1e5 + 1e-9, 0.1, -3), 0.3, m});
+    Vertex a = vertex({1e5, 0, -5}, m), b = vertex({1e5 + 1e-9, 0, -5}, m), c = vertex({1e5, 1, -5}, m);
+    scene.triangles.push_back({{a, b, c}});
+    scene.triangles.push_back({{b, a, c}});
+
+    PackedScene single = packScene(scene);
+    EXPECT_TRUE(single.spheres64.empty());
+    EXPECT_TRUE(single.vertexPositions64.empty());
+    EXPECT_EQ(single.vertexPositions.size(), 2u) << "a and b are the same float";
+
+    PackedScene exact = packScene(scene, Precision::Fp64);
+    ASSERT_EQ(exact.spheres64.size(), 1u);
+    EXPECT_EQ(exact.spheres64[0], glm::dvec4(1e5 + 1e-9, 0.1, -3, 0.3));
+    ASSERT_EQ(exact.vertexPositions64.size(), 3u) << "a and b are different doubles";
+    EXPECT_EQ(exact.vertexPositions.size(), 3u);
+    EXPECT_EQ(glm::dvec3(exact.vertexPositions64[1]), b.position);
+    for (std::size_t v = 0; v < 3; ++v)
+        EXPECT_EQ(exact.vertexPositions64[v].w, double(vertexMaterial(exact, v)));
+
+    // Every box, rounded outward to float, holds its primitive's double extent.
+    PrimitiveBounds bounds = primitiveBounds(exact);
+    ASSERT_EQ(bounds.boxes.size(), 6u * 3u);
+    const glm::dvec4 sphere = exact.spheres64[0];
+    for (int axis = 0; axis < 3; ++axis) {
+        EXPECT_LE(double(bounds.boxes[axis]), sphere[axis] - sphere.w);
+        EXPECT_GE(double(bounds.boxes[3 + axis]), sphere[axis] + sphere.w);
+    }
+    for (std::size_t t = 0; t < 2; ++t)
+        for (std::size_t k = 0; k < 3; ++k) {
+            glm::dvec3 p(exact.vertexPositions64[exact.triangleVertices[3 * t + k]]);
+            const float* box = &bounds.boxes[6 * (1 + t)];
+            for (int axis = 0; axis < 3; ++axis) {
+                EXPECT_LE(double(box[axis]), p[axis]);
+                EXPECT_GE(double(box[3 + axis]), p[axis]);
+            }
+        }
 }
 
 } // namespace

@@ -205,6 +205,52 @@ TEST_F(StartupCache, PipelineCacheOfAnotherDeviceIsIgnoredWithANote) {
     }
 }
 
+// Kernel variants never share a cache file: fp64 is compiled from the same sources with
+// another preamble, so it gets its own SPIR-V file (and pipeline file); a method switch is
+// a specialization constant of the same SPIR-V, so it gets only its own pipeline file.
+// After all of them, each variant still starts warm (no note, nothing rewritten) and
+// draws what it drew uncached.
+TEST_F(StartupCache, PrecisionsAndSpecializationsKeepSeparateFiles) {
+    fs::path cache = filledCache();
+    ASSERT_EQ(filesIn(cache).size(), 2u);
+    ASSERT_EQ(render(dir_ / "unused-home", "fp64-uncached", {"--no-cache", "--precision", "fp64"})
+                  .exitCode, 0);
+    ProcessResult fp64 = render(dir_ / "home", "fp64", {"--precision", "fp64"});
+    ASSERT_EQ(fp64.exitCode, 0) << fp64.err;
+    EXPECT_EQ(fp64.err.find("note:"), std::string::npos) << fp64.err;
+    EXPECT_EQ(png("fp64"), png("fp64-uncached"));
+    auto countPrefix = [&](const std::string& prefix) {
+        std::vector<fs::path> files = filesIn(cache);
+        return std::count_if(files.begin(), files.end(), [&](const fs::path& file) {
+            return file.filename().string().rfind(prefix, 0) == 0;
+        });
+    };
+    EXPECT_EQ(countPrefix("spirv-"), 2) << "fp32 and fp64 need two SPIR-V files";
+    EXPECT_EQ(countPrefix("pipeline-"), 2);
+
+    ProcessResult naive = render(dir_ / "home", "naive", {"--sphere-test", "naive"});
+    ASSERT_EQ(naive.exitCode, 0) << naive.err;
+    EXPECT_EQ(countPrefix("spirv-"), 2) << "a specialization constant needs no new SPIR-V";
+    EXPECT_EQ(countPrefix("pipeline-"), 3) << "but a pipeline file of its own";
+
+    const std::vector<fs::path> files = filesIn(cache);
+    std::vector<fs::file_time_type> times;
+    for (const fs::path& file : files) times.push_back(fs::last_write_time(file));
+    for (const auto& [name, flags] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+             {"fp32-warm", {}}, {"fp64-warm", {"--precision", "fp64"}},
+             {"naive-warm", {"--sphere-test", "naive"}}}) {
+        ProcessResult warm = render(dir_ / "home", name, flags);
+        ASSERT_EQ(warm.exitCode, 0) << warm.err;
+        EXPECT_EQ(warm.err.find("note:"), std::string::npos) << name << ": " << warm.err;
+    }
+    EXPECT_EQ(png("fp32-warm"), png("uncached"));
+    EXPECT_EQ(png("fp64-warm"), png("fp64-uncached"));
+    EXPECT_EQ(png("naive-warm"), png("naive"));
+    EXPECT_EQ(filesIn(cache), files) << "warm starts add no files";
+    for (std::size_t i = 0; i < files.size(); ++i)
+        EXPECT_EQ(fs::last_write_time(files[i]), times[i]) << files[i] << " was rewritten";
+}
+
 TEST_F(StartupCache, WithoutAWritableFolderThereIsNoCacheAndANote) {
     ProcessResult uncached = render(dir_ / "unused-home", "uncached", {"--no-cache"});
     ASSERT_EQ(uncached.exitCode, 0) << uncached.err;
