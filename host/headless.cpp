@@ -50,7 +50,11 @@ void createHeadlessTarget(HeadlessTarget& target, const Context& context, const 
                           std::uint32_t fixedTileSide) {
     VkDeviceSize bytes = VkDeviceSize(renderer.outputImage.width) * renderer.outputImage.height * 4;
     target.readbackBuffer = createHostBuffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-    target.scheduler = createTileScheduler(fixedTileSide);
+    // No watchdog guards a CPU device: it gets longer submissions (host/tile_scheduler.h).
+    const double targetMs = context.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU
+                                ? kCpuTargetSubmissionMs
+                                : kTargetSubmissionMs;
+    target.scheduler = createTileScheduler(fixedTileSide, targetMs);
 
     VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     allocateInfo.commandPool = context.commandPool;

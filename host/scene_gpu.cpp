@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
+#include <type_traits>
 
 // The C++ mirror must have exactly the std430 layout the shader reads.
 static_assert(sizeof(gpu::GpuMaterial) == 32);
@@ -20,35 +21,79 @@ static_assert(offsetof(gpu::GpuFrameParams, tile) == 112);
 
 namespace {
 
-// Hashes the raw bytes of a trivially copyable key, so that exactly equal values
-// (bit for bit) are merged and nothing else is.
-template <typename T> struct BytesKey {
-    T value;
-    bool operator==(const BytesKey& other) const {
-        return std::memcmp(&value, &other.value, sizeof(T)) == 0;
+// A 64-bit hash of the raw bytes of a trivially copyable value, so that exactly equal
+// values (bit for bit) are merged and nothing else is.
+template <typename T> std::uint64_t hashBytes(const T& value) {
+    static_assert(std::is_trivially_copyable_v<T> && sizeof(T) % 4 == 0);
+    const auto* bytes = reinterpret_cast<const unsigned char*>(&value);
+    std::uint64_t hash = 0x9E3779B97F4A7C15ull;
+    std::size_t i = 0;
+    for (; i + 8 <= sizeof(T); i += 8) {
+        std::uint64_t word;
+        std::memcpy(&word, bytes + i, 8);
+        hash = std::rotl((hash ^ word) * 0xFF51AFD7ED558CCDull, 29);
     }
-};
-template <typename T> struct BytesHash {
-    std::size_t operator()(const BytesKey<T>& key) const {
-        return std::hash<std::string_view>()(
-            std::string_view(reinterpret_cast<const char*>(&key.value), sizeof(T)));
+    if (i < sizeof(T)) {
+        std::uint32_t word;
+        std::memcpy(&word, bytes + i, 4);
+        hash = std::rotl((hash ^ word) * 0xFF51AFD7ED558CCDull, 29);
     }
-};
+    // MurmurHash3's finaliser: every input bit reaches every output bit.
+    hash ^= hash >> 33;
+    hash *= 0xC4CEB9FE1A85EC53ull;
+    return hash ^ (hash >> 33);
+}
 
-// Gives each distinct value an index, in order of first appearance.
+// Gives each distinct value an index, in order of first appearance. An open-addressing
+// table (linear probing, at most half full) of 8-byte slots holding the value's index
+// and 32 bits of its hash, so that a probe rarely looks at a value that differs: a
+// million-triangle mesh makes three million look-ups, and std::unordered_map's node per
+// entry made them cost half a second.
 template <typename T> class Deduplicator {
   public:
-    explicit Deduplicator(std::vector<T>& values) : values_(values) {}
+    Deduplicator(std::vector<T>& values, std::size_t expectedDistinct) : values_(values) {
+        slots_.resize(std::bit_ceil(std::max<std::size_t>(2 * expectedDistinct, 16)));
+    }
+
     std::uint32_t indexOf(const T& value) {
-        auto [it, inserted] =
-            indices_.try_emplace(BytesKey<T>{value}, static_cast<std::uint32_t>(values_.size()));
-        if (inserted) values_.push_back(value);
-        return it->second;
+        const std::uint64_t hash = hashBytes(value);
+        const auto tag = static_cast<std::uint32_t>(hash >> 32);
+        const std::size_t mask = slots_.size() - 1;
+        std::size_t at = hash & mask;
+        for (; slots_[at].indexPlusOne != 0; at = (at + 1) & mask) {
+            const Slot slot = slots_[at];
+            if (slot.tag == tag &&
+                std::memcmp(&values_[slot.indexPlusOne - 1], &value, sizeof(T)) == 0)
+                return slot.indexPlusOne - 1;
+        }
+        const auto index = static_cast<std::uint32_t>(values_.size());
+        values_.push_back(value);
+        slots_[at] = {index + 1, tag};
+        if (2 * values_.size() > slots_.size()) grow();
+        return index;
     }
 
   private:
+    struct Slot {
+        std::uint32_t indexPlusOne = 0; // 0: empty
+        std::uint32_t tag = 0;          // the hash's upper half
+    };
+
+    void grow() {
+        std::vector<Slot> slots(2 * slots_.size());
+        const std::size_t mask = slots.size() - 1;
+        for (std::size_t i = 0; i < values_.size(); ++i) {
+            const std::uint64_t hash = hashBytes(values_[i]);
+            std::size_t at = hash & mask;
+            while (slots[at].indexPlusOne != 0)
+                at = (at + 1) & mask;
+            slots[at] = {std::uint32_t(i + 1), static_cast<std::uint32_t>(hash >> 32)};
+        }
+        slots_.swap(slots);
+    }
+
     std::vector<T>& values_;
-    std::unordered_map<BytesKey<T>, std::uint32_t, BytesHash<T>> indices_;
+    std::vector<Slot> slots_;
 };
 
 glm::vec4 toVec4(const glm::dvec3& v, double w = 0.0) {
@@ -74,26 +119,44 @@ PackedScene packScene(const Scene& scene, Precision precision) {
     const bool fp64 = precision == Precision::Fp64;
     PackedScene packed;
     packed.ambient = toVec4(scene.ambient);
-    Deduplicator<gpu::GpuMaterial> materials(packed.materials);
+    Deduplicator<gpu::GpuMaterial> materials(packed.materials, 64);
+    // Neighbouring vertices often share a material: compare with the last one first.
+    gpu::GpuMaterial lastMaterial{};
+    std::uint32_t lastMaterialIndex = UINT32_MAX;
+    auto materialIndex = [&](const Material& material) {
+        const gpu::GpuMaterial packedMaterial = toGpuMaterial(material);
+        if (lastMaterialIndex == UINT32_MAX ||
+            std::memcmp(&packedMaterial, &lastMaterial, sizeof lastMaterial) != 0) {
+            lastMaterial = packedMaterial;
+            lastMaterialIndex = materials.indexOf(packedMaterial);
+        }
+        return lastMaterialIndex;
+    };
 
+    packed.spheres.reserve(scene.spheres.size());
+    packed.sphereMaterials.reserve(scene.spheres.size());
     for (const Sphere& sphere : scene.spheres) {
         packed.spheres.push_back(toVec4(sphere.center, sphere.radius));
-        packed.sphereMaterials.push_back(materials.indexOf(toGpuMaterial(sphere.material)));
+        packed.sphereMaterials.push_back(materialIndex(sphere.material));
         if (fp64) packed.spheres64.push_back(glm::dvec4(sphere.center, sphere.radius));
     }
 
+    // A closed mesh has about half as many vertices as triangles.
     std::vector<PackedVertex> vertices;
-    Deduplicator<PackedVertex> vertexIndices(vertices);
+    Deduplicator<PackedVertex> vertexIndices(vertices, scene.triangles.size() / 2);
+    packed.triangleVertices.reserve(3 * scene.triangles.size());
     for (const Triangle& triangle : scene.triangles) {
         for (const Vertex& vertex : triangle.vertices) {
             PackedVertex packedVertex{};
             packedVertex.position = toVec4(vertex.position);
             packedVertex.normal = toVec4(vertex.normal);
-            packedVertex.material = materials.indexOf(toGpuMaterial(vertex.material));
+            packedVertex.material = materialIndex(vertex.material);
             if (fp64) packedVertex.exactPosition = glm::dvec4(vertex.position, 0.0);
             packed.triangleVertices.push_back(vertexIndices.indexOf(packedVertex));
         }
     }
+    packed.vertexPositions.reserve(vertices.size());
+    packed.vertexNormals.reserve(3 * vertices.size());
     // 28 bytes a vertex: the material index rides in the position's unused w, and the
     // normal takes three floats rather than a padded vec4.
     for (const PackedVertex& vertex : vertices) {

@@ -29,8 +29,9 @@ std::uint32_t alignDown(double value, std::uint32_t alignment, std::uint32_t lim
 
 } // namespace
 
-TileScheduler createTileScheduler(std::uint32_t fixedSide) {
+TileScheduler createTileScheduler(std::uint32_t fixedSide, double targetMs) {
     TileScheduler scheduler;
+    scheduler.targetMs = targetMs;
     const std::uint32_t alignment = std::max(kAlignX, kAlignY);
     if (fixedSide > 0) scheduler.fixedSide = (fixedSide + alignment - 1) / alignment * alignment;
     return scheduler;
@@ -74,7 +75,7 @@ bool frameCovered(const TileScheduler& scheduler) {
 
 void regionTraced(TileScheduler& scheduler, const TraceRegion& region, double milliseconds) {
     const double pixels = double(region.width) * region.height;
-    const double wanted = pixels / std::max(milliseconds, 0.01) * kTargetSubmissionMs;
+    const double wanted = pixels / std::max(milliseconds, 0.01) * scheduler.targetMs;
     scheduler.budgetPixels =
         std::clamp(wanted, kMinPixels, std::min(kMaxPixels, scheduler.budgetPixels * kMaxGrowth));
 }

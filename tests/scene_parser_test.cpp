@@ -1,16 +1,22 @@
 // The scene parser from strings: every accepted form, every error with its exact
 // message, the warnings, and the sample scenes of the classic assignment.
 #include "scene.h"
+#include "scene_text.h"
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <random>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -575,6 +581,365 @@ TEST(SceneParser, LargeInputParsesQuickly) {
     EXPECT_EQ(scene.triangles.back().vertices[2].position,
               glm::dvec3(0, 1.0625, std::stod(depth(count - 1))));
     EXPECT_TRUE(scene.warnings.empty());
+}
+
+// ------------------------------------------------------- numbers, fast and slow
+
+// The one-pass decimal reader must give exactly what from_chars gives, bit for bit,
+// and the same verdict, on every form: short and long mantissas, points anywhere,
+// exponents around the exact range of powers of ten, mantissas around 2^53.
+TEST(SceneNumbers, FastPathMatchesFromCharsBitForBit) {
+    std::mt19937_64 random(12345);
+    const auto check = [](const std::string& token) {
+        double fast = 0.0, slow = 0.0;
+        const scene_text::NumberStatus fastStatus = scene_text::parseNumber(token, fast);
+        const scene_text::NumberStatus slowStatus = scene_text::parseNumberSlow(token, slow);
+        ASSERT_EQ(fastStatus, slowStatus) << token;
+        if (fastStatus == scene_text::NumberStatus::ok) {
+            ASSERT_EQ(std::bit_cast<std::uint64_t>(fast), std::bit_cast<std::uint64_t>(slow))
+                << token;
+        }
+    };
+    for (const char* token : {"0",
+                              "-0",
+                              "+0",
+                              "0.0",
+                              "-0.0",
+                              "00",
+                              ".0",
+                              "0.",
+                              "1",
+                              "-1",
+                              "+1",
+                              "9007199254740992",
+                              "9007199254740993",
+                              "9007199254740991",
+                              "-9007199254740993",
+                              "18446744073709551615",
+                              "18446744073709551616",
+                              "9999999999999999999",
+                              "99999999999999999999",
+                              "1e22",
+                              "1e23",
+                              "1e-22",
+                              "1e-23",
+                              "9007199254740992e22",
+                              "9007199254740993e-22",
+                              "123456789e-30",
+                              "0.000000000000000000001",
+                              "1.5e+0",
+                              "1.5E-0",
+                              "2.2250738585072014e-308",
+                              "4.9e-324",
+                              "1e-400",
+                              "1e400",
+                              "0e999",
+                              "-0e-999",
+                              "1.e5",
+                              ".5e1",
+                              "5.e-1",
+                              "-.5",
+                              "+.5",
+                              "1e",
+                              "1e+",
+                              "e1",
+                              ".",
+                              "-",
+                              "+",
+                              "+-1",
+                              "--1",
+                              "1.2.3",
+                              "1e1.5",
+                              "0x10",
+                              "inf",
+                              "nan",
+                              "1,5",
+                              "１",
+                              "0.1",
+                              "0.2",
+                              "0.3",
+                              "-2.6748e-08",
+                              "0.4699999988079071",
+                              "-0.35315093486933696",
+                              "1.44076172",
+                              "-12",
+                              "0.75"})
+        check(token);
+    std::uniform_int_distribution<int> digitCount(1, 24), digit(0, 9), exponent(-40, 40),
+        coin(0, 3);
+    for (int i = 0; i < 200000; ++i) {
+        std::string token = coin(random) == 0 ? "-" : coin(random) == 0 ? "+" : "";
+        const int digits = digitCount(random);
+        const int point = std::uniform_int_distribution<int>(-1, digits)(random);
+        for (int d = 0; d < digits; ++d) {
+            if (d == point) token += '.';
+            token += char('0' + digit(random));
+        }
+        if (point == digits) token += '.';
+        if (coin(random) != 0) {
+            token += coin(random) == 0 ? 'E' : 'e';
+            const int e = exponent(random);
+            token += e < 0 ? "-" : coin(random) == 0 ? "+" : "";
+            token += std::to_string(std::abs(e));
+        }
+        check(token);
+        if (HasFatalFailure()) return;
+    }
+    // The numbers that scene generators write: %.9g and %.17g of random doubles.
+    std::uniform_real_distribution<double> value(-1000.0, 1000.0);
+    for (int i = 0; i < 100000; ++i) {
+        char text[64];
+        const double x = value(random) * std::pow(10.0, exponent(random) / 4);
+        std::snprintf(text, sizeof text, i % 2 ? "%.9g" : "%.17g", x);
+        check(text);
+        if (HasFatalFailure()) return;
+    }
+}
+
+// ------------------------------------------------------------ binary check
+
+// The eight-bytes-at-a-time scan must flag exactly what the byte-by-byte rule flags,
+// at every offset within and across words.
+TEST(SceneText, BinaryCheckFindsEveryByteAtEveryOffset) {
+    for (int byte = 0; byte < 256; ++byte) {
+        const char c = char(byte);
+        const bool text = (byte >= 0x20 && byte < 0x7F) || scene_text::isSpace(c);
+        for (std::size_t at = 0; at < 20; ++at) {
+            std::string sample(20, 'a');
+            sample[at] = c;
+            const auto reason = scene_text::binaryReason(sample);
+            std::string expected;
+            if (byte == 0)
+                expected = "NUL byte at offset " + std::to_string(at);
+            else if (byte < 0x80 && !text)
+                expected = "control byte 0x";
+            else if (byte >= 0x80)
+                expected = "invalid UTF-8 at offset " + std::to_string(at); // a lone lead byte
+            if (text) {
+                EXPECT_FALSE(reason.has_value()) << byte << " at " << at;
+            } else {
+                ASSERT_TRUE(reason.has_value()) << byte << " at " << at;
+                EXPECT_EQ(reason->substr(0, expected.size()), expected);
+                EXPECT_NE(reason->find("offset " + std::to_string(at)), std::string::npos);
+            }
+        }
+    }
+    // Multi-byte characters across a word boundary are text.
+    for (std::size_t at = 0; at < 12; ++at)
+        EXPECT_FALSE(scene_text::binaryReason(std::string(at, 'a') +
+                                              "\xC3\xA8\xE2\x82\xAC\xF0\x9F\x98\x80" +
+                                              std::string(9, 'b'))
+                         .has_value());
+}
+
+// ------------------------------------------------------ reading in parallel
+
+// A scene of many small objects with warnings, blank lines and mixed line ends, so that
+// chunks start at every kind of object and warnings fall in every chunk.
+std::string mixedScene(int groups) {
+    std::string objects;
+    for (int i = 0; i < groups; ++i) {
+        objects += replaced(sphereText, "rad: 1", "rad: " + std::to_string(i + 1));
+        objects +=
+            i % 3 == 0 ? replaced(triangleText, "dif: 0 0 0.5", "dif: 0 0 1.5") : triangleText;
+        objects += i % 4 == 1 ? "\r\n\r\n" : "\n";
+        objects += i % 5 == 2 ? lightText : "LIGHT\npos: 1 1 1\ncol: 1 1 1\n";
+    }
+    return header(3 * groups) + objects;
+}
+
+// What parsing gives, as one string: the error, or every value (hex floats) and warning.
+std::string outcome(std::string_view text, const SceneParseOptions& options) {
+    Scene scene;
+    try {
+        scene = parseScene(text, "t.scene", options);
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    std::ostringstream out;
+    out << std::hexfloat;
+    const auto material = [&](const Material& m) {
+        out << m.diffuse.x << m.diffuse.y << m.diffuse.z << m.specular.x << m.specular.y
+            << m.specular.z << m.shininess << ';';
+    };
+    out << scene.ambient.x << scene.ambient.y << scene.ambient.z << '\n';
+    for (const Sphere& s : scene.spheres) {
+        out << "S" << s.center.x << s.center.y << s.center.z << s.radius;
+        material(s.material);
+    }
+    for (const Triangle& t : scene.triangles)
+        for (const Vertex& v : t.vertices) {
+            out << "V" << v.position.x << v.position.y << v.position.z << v.normal.x << v.normal.y
+                << v.normal.z;
+            material(v.material);
+        }
+    for (const Light& l : scene.lights)
+        out << "L" << l.position.x << l.position.y << l.position.z << l.color.x << l.color.y
+            << l.color.z;
+    for (const std::string& warning : scene.warnings)
+        out << '\n' << warning;
+    return out.str();
+}
+
+std::string inOnePass(std::string_view text) {
+    return outcome(text, {1, 1});
+}
+
+// Several thread counts, with chunks as small as one byte so that even a short text is
+// split, each at other places.
+void expectSameAsOnePass(std::string_view text) {
+    const std::string expected = inOnePass(text);
+    for (unsigned threads : {2u, 3u, 5u})
+        ASSERT_EQ(outcome(text, {threads, 1}), expected) << threads << " threads";
+}
+
+// A file of several megabytes is mapped rather than read (host/scene.cpp, FileText) and
+// split among threads: it must load exactly as its text parses in one pass, errors and
+// their line numbers included.
+TEST(SceneLoad, LargeFileLoadsAsItsTextParses) {
+    const std::filesystem::path path =
+        std::filesystem::path(testing::TempDir()) / "scene_parser_test_large.scene";
+    const std::string text = mixedScene(14000); // about 4 MB
+    ASSERT_GT(text.size(), 3u << 20);
+    std::string damaged = text;
+    damaged.replace(damaged.rfind("rad: "), 5, "rod: ");
+    for (const std::string& content : {text, damaged}) {
+        std::ofstream(path, std::ios::binary) << content;
+        std::string loaded;
+        try {
+            const Scene scene = loadScene(path);
+            loaded = std::to_string(scene.triangles.size()) + " triangles, " +
+                     std::to_string(scene.warnings.size()) + " warnings, the last " +
+                     scene.warnings.back();
+        } catch (const SceneError& e) {
+            loaded = e.what();
+        }
+        std::string parsed;
+        try {
+            const Scene scene = parseScene(content, path.string(), {1, 1});
+            parsed = std::to_string(scene.triangles.size()) + " triangles, " +
+                     std::to_string(scene.warnings.size()) + " warnings, the last " +
+                     scene.warnings.back();
+        } catch (const SceneError& e) {
+            parsed = e.what();
+        }
+        EXPECT_EQ(loaded, parsed);
+    }
+    std::filesystem::remove(path);
+}
+
+TEST(SceneParallel, ChunksStartAtObjectKeywords) {
+    const std::string text = mixedScene(20);
+    for (unsigned threads = 1; threads <= 8; ++threads) {
+        const std::vector<std::size_t> starts = scene_text::chunkStarts(text, threads, 1);
+        EXPECT_EQ(starts.size(), threads); // every share of this text holds a keyword
+        EXPECT_EQ(starts.front(), 0u);
+        for (std::size_t k = 1; k < starts.size(); ++k) {
+            EXPECT_GT(starts[k], starts[k - 1]);
+            EXPECT_TRUE(scene_text::isSpace(text[starts[k] - 1]));
+            const std::string_view word = std::string_view(text).substr(starts[k], 5);
+            EXPECT_TRUE(word == "spher" || word == "trian" || word == "LIGHT" || word == "light")
+                << word;
+        }
+    }
+    EXPECT_EQ(scene_text::chunkStarts(text, 8, text.size()).size(), 1u); // too small to split
+    EXPECT_EQ(scene_text::chunkStarts(std::string(100, 'x'), 4, 1).size(), 1u); // no keyword
+}
+
+TEST(SceneParallel, ValidSceneIsTheSameAsInOnePass) {
+    const std::string text = mixedScene(30);
+    ASSERT_EQ(inOnePass(text).find("error"), std::string::npos) << inOnePass(text);
+    ASSERT_NE(inOnePass(text).find(":"), std::string::npos); // it has warnings, with lines
+    expectSameAsOnePass(text);
+    expectSameAsOnePass("\xEF\xBB\xBF" + text);
+    expectSameAsOnePass(text + "\n\n\n");
+}
+
+TEST(SceneParallel, ObjectCountThatDoesNotAddUp) {
+    const std::string objects = mixedScene(20).substr(header(60).size());
+    for (int count : {0, 1, 30, 59, 61, 100})
+        expectSameAsOnePass(header(count) + objects);
+    expectSameAsOnePass(header(60) + objects + "sphere\n"); // more follow, in the last chunk
+    expectSameAsOnePass(header(60) + objects.substr(0, objects.size() - 20)); // cut short
+}
+
+// The first error in file order wins, wherever the chunks begin: one planted early and
+// one planted late give the early one; the late one alone is reported with its line.
+TEST(SceneParallel, FirstErrorInFileOrderWins) {
+    const std::string text = mixedScene(20);
+    const std::size_t early = text.find("rad: 3"), late = text.rfind("shi: 40");
+    std::string both = text;
+    both.replace(late, 7, "shi: -4");
+    both.replace(early, 6, "rad: 0");
+    const std::string expected =
+        "t.scene:" +
+        std::to_string(1 + std::count(text.begin(), text.begin() + std::ptrdiff_t(early), '\n')) +
+        ": error: the sphere's radius must be positive, found 0";
+    for (unsigned threads = 1; threads <= 7; ++threads)
+        EXPECT_EQ(outcome(both, {threads, 1}), expected) << threads;
+    std::string lateOnly = text;
+    lateOnly.replace(late, 7, "shi: -4");
+    ASSERT_NE(inOnePass(lateOnly).find("shininess must not be negative, found -4"),
+              std::string::npos);
+    expectSameAsOnePass(lateOnly);
+}
+
+// Every single-token damage anywhere in the file reads the same as in one pass:
+// deleted, replaced by a word, a bad number, an object keyword, or doubled.
+TEST(SceneParallel, EveryDamagedTokenIsReportedAsInOnePass) {
+    const std::string text = mixedScene(8);
+    std::vector<std::pair<std::size_t, std::size_t>> tokens; // offset, length
+    for (scene_text::Tokenizer tokenizer{text};;) {
+        const scene_text::Token token = tokenizer.next();
+        if (token.text.empty()) break;
+        tokens.emplace_back(std::size_t(token.text.data() - text.data()), token.text.size());
+    }
+    const char* replacements[] = {"", "x", "-1", "nan", "sphere", "TRIANGLE", "light"};
+    for (std::size_t i = 0; i < tokens.size(); i += 3) {
+        const auto [at, length] = tokens[i];
+        for (const char* replacement : replacements) {
+            std::string damaged = text;
+            damaged.replace(at, length, replacement);
+            expectSameAsOnePass(damaged);
+            if (HasFatalFailure()) return;
+        }
+        std::string doubled = text;
+        doubled.insert(at, text.substr(at, length) + " ");
+        expectSameAsOnePass(doubled);
+        if (HasFatalFailure()) return;
+    }
+}
+
+// Two damaged tokens, one in each half: always the first one's error.
+TEST(SceneParallel, TwoDamagedTokensGiveTheFirstError) {
+    const std::string text = mixedScene(12);
+    std::mt19937 random(7);
+    std::uniform_int_distribution<std::size_t> firstHalf(0, text.size() / 2 - 1),
+        secondHalf(text.size() / 2, text.size() - 1);
+    for (int i = 0; i < 200; ++i) {
+        std::string damaged = text;
+        damaged[secondHalf(random)] = '?';
+        damaged[firstHalf(random)] = '#';
+        expectSameAsOnePass(damaged);
+        if (HasFatalFailure()) return;
+    }
+}
+
+// A large generated mesh file, split among threads as a user's file would be, reads
+// exactly as in one pass.
+TEST(SceneParallel, LargeSceneIsTheSameInChunks) {
+    std::string text = header(3 * 3000);
+    std::string objects;
+    for (int i = 0; i < 3000; ++i) {
+        text += replaced(sphereText, "0.0 0.0 -3.0", std::to_string(i) + ".25 0.5 -3");
+        text += replaced(triangleText, "-1.2 0 -2", "-1.2 " + std::to_string(i) + " -2");
+        text += lightText;
+    }
+    const std::string expected = inOnePass(text);
+    ASSERT_EQ(expected.find("error"), std::string::npos);
+    for (unsigned threads : {2u, 3u, 8u})
+        EXPECT_EQ(outcome(text, {threads, 4096}), expected);
+    EXPECT_EQ(outcome(text, {}), expected); // the defaults
 }
 
 } // namespace

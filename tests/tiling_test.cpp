@@ -116,6 +116,28 @@ TEST(TileScheduler, AdaptsTowardTheTargetAndGrowsGradually) {
     EXPECT_GT(pixelsOf(first), 64.0 * 64.0 * 16);
 }
 
+// A CPU device gets longer submissions (no watchdog; each submission costs lavapipe an
+// idle tail): the same adapting, toward kCpuTargetSubmissionMs, in fewer submissions.
+TEST(TileScheduler, CpuTargetAdaptsTowardItsOwnTarget) {
+    const double pixelsPerMs = 5000.0;
+    const auto timing = [&](const TraceRegion& r) { return pixelsOf(r) / pixelsPerMs; };
+    TileScheduler gpu = createTileScheduler(0);
+    TileScheduler cpu = createTileScheduler(0, kCpuTargetSubmissionMs);
+    planFrame(gpu, 4096, 4096, timing); // both learn on a first frame
+    planFrame(cpu, 4096, 4096, timing);
+    std::vector<TraceRegion> gpuRegions = planFrame(gpu, 4096, 4096, timing);
+    std::vector<TraceRegion> cpuRegions = planFrame(cpu, 4096, 4096, timing);
+    std::vector<double> times;
+    for (const TraceRegion& region : cpuRegions)
+        times.push_back(timing(region));
+    std::sort(times.begin(), times.end());
+    EXPECT_NEAR(times[times.size() / 2], kCpuTargetSubmissionMs, kCpuTargetSubmissionMs * 0.3);
+    EXPECT_LT(times.back(), 2.0 * kCpuTargetSubmissionMs);
+    EXPECT_LT(cpuRegions.size() * 4, gpuRegions.size());
+    EXPECT_GT(kCpuTargetSubmissionMs, kTargetSubmissionMs);
+    EXPECT_LE(kCpuTargetSubmissionMs, 500.0) << "Ctrl-C and progress must stay responsive";
+}
+
 TEST(TileScheduler, SlowRegionsShrinkToOneWorkgroup) {
     TileScheduler scheduler = createTileScheduler(0);
     std::vector<TraceRegion> regions =
