@@ -94,3 +94,14 @@ quit_with_key() { # PID ID KEY
 press_key() { # ID KEY
     timeout 10 xdotool key --window "$1" "$2" || true
 }
+
+# Exits 1 naming the first tool the window tests need that is not installed.
+require_window_tools() {
+    local tool
+    for tool in xvfb-run xauth xwininfo xwd xdotool python3 timeout; do
+        command -v "$tool" > /dev/null || { echo "window test: $tool is missing (tools/install_deps.sh)"; exit 1; }
+    done
+}
+
+# The absolute path of an existing file, for the re-run of a test inside xvfb-run.
+absolute() { echo "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; }

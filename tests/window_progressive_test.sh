@@ -120,11 +120,8 @@ if (($# != 4)); then
     echo "usage: $0 RAYTRACER SCENE OUTPUT_DIR IMAGE_DIFF" >&2
     exit 2
 fi
-for tool in xvfb-run xauth xwininfo xwd xdotool python3 timeout; do
-    command -v "$tool" > /dev/null || { echo "window test: $tool is missing (tools/install_deps.sh)"; exit 1; }
-done
+require_window_tools
 mkdir -p "$3"
-absolute() { echo "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; }
 rm -f "$3"/*.png "$3"/*.xwd "$3"/*.log "$3"/*.txt
 timeout 280 xvfb-run -a -s "-screen 0 1024x768x24" \
     "$(absolute "$0")" --inside-xvfb "$(absolute "$1")" "$(absolute "$2")" "$(absolute "$3")" "$(absolute "$4")"

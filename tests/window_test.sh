@@ -139,11 +139,8 @@ if (($# != 4)); then
     echo "usage: $0 RAYTRACER SCENES_DIR OUTPUT_DIR IMAGE_DIFF" >&2
     exit 2
 fi
-for tool in xvfb-run xauth xwininfo xwd xdotool python3 timeout; do
-    command -v "$tool" > /dev/null || { echo "window test: $tool is missing (tools/install_deps.sh)"; exit 1; }
-done
+require_window_tools
 mkdir -p "$3"
-absolute() { echo "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; }
 raytracer=$(absolute "$1") scenes_dir=$(absolute "$2") output_dir=$(absolute "$3") image_diff=$(absolute "$4")
 rm -f "$output_dir"/*.png "$output_dir"/*.xwd "$output_dir"/*.log "$output_dir"/*.txt
 # One X server for the whole test, on a free display number (-a).

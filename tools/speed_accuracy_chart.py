@@ -11,8 +11,9 @@ that panel's metric; the CSV's pareto column is the front on RMSE). Needs matplo
 (Debian: python3-matplotlib); exits 3 without it, 1 if there is nothing to plot.
 """
 import argparse
-import csv
 import sys
+
+from chart_support import import_pyplot, read_rows
 
 COLOURS = {"grid": "tab:blue", "stratified": "tab:orange", "r2": "tab:green"}
 MARKERS = {"fp32": "o", "fp64": "s"}
@@ -33,16 +34,10 @@ def main():
     parser.add_argument("csv")
     parser.add_argument("png")
     args = parser.parse_args()
-    try:
-        import matplotlib
-        matplotlib.use("Agg")  # no display needed
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("speed_accuracy_chart: matplotlib is missing (tools/install_deps.sh --bench)",
-              file=sys.stderr)
+    plt = import_pyplot("speed_accuracy_chart")
+    if plt is None:
         return 3
-    with open(args.csv, newline="") as f:
-        rows = list(csv.DictReader(f))
+    rows = read_rows(args.csv)
     scenes = list(dict.fromkeys(r["scene"] for r in rows))
     if not scenes:
         print("speed_accuracy_chart: nothing to plot", file=sys.stderr)

@@ -11,9 +11,10 @@ methods together in fp32 and fp64. Needs matplotlib (Debian: python3-matplotlib)
 without it, 1 if there is nothing to plot.
 """
 import argparse
-import csv
 import math
 import sys
+
+from chart_support import import_pyplot, read_rows
 
 # (label, colour, style, wanted settings); a line is drawn only where the family varies
 # every method it names.
@@ -54,16 +55,10 @@ def main():
     parser.add_argument("csv")
     parser.add_argument("png")
     args = parser.parse_args()
-    try:
-        import matplotlib
-        matplotlib.use("Agg")  # no display needed
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("stability_chart: matplotlib is missing (tools/install_deps.sh --bench)",
-              file=sys.stderr)
+    plt = import_pyplot("stability_chart")
+    if plt is None:
         return 3
-    with open(args.csv, newline="") as f:
-        rows = list(csv.DictReader(f))
+    rows = read_rows(args.csv)
     families = list(dict.fromkeys(r["family"] for r in rows))
     if not families:
         print("stability_chart: nothing to plot", file=sys.stderr)

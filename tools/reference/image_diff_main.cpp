@@ -1,6 +1,7 @@
 // image_diff A.png B.png [--tolerance T] [--min-match PERCENT] [--diff OUT.png]
 // Exit status: 0 when enough pixels match, 1 when not, 2 on any error.
 #include "image_compare.h"
+#include "tool_arguments.h"
 
 #include <charconv>
 #include <cmath>
@@ -19,14 +20,7 @@ const char* const usage =
     "pixels match (default 99.5), 1 when fewer do, 2 on error. --diff writes a grey\n"
     "copy of A with the pixels over the tolerance in red.\n";
 
-template <typename T> T parseNumber(std::string_view option, std::string_view text) {
-    T value{};
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size() || text.empty())
-        throw std::invalid_argument(std::string(option) + " expects a number, got '" +
-                                    std::string(text) + "'");
-    return value;
-}
+using tool_arguments::parseNumber;
 
 } // namespace
 

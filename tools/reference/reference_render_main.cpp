@@ -1,5 +1,6 @@
 // reference_render SCENE -o out.png [options]: the CPU reference renderer as a tool.
 #include "reference_renderer.h"
+#include "tool_arguments.h"
 
 #include <charconv>
 #include <chrono>
@@ -29,44 +30,10 @@ const char* const usage =
     "  --camera-target X,Y,Z  point looked at, default 0,0,-1 from the eye\n"
     "  --camera-up X,Y,Z      up direction, default 0,1,0\n";
 
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-template <typename T> T parseNumber(std::string_view option, std::string_view text) {
-    T value{};
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size() || text.empty())
-        throw UsageError(std::string(option) + " expects a number, got '" + std::string(text) +
-                         "'");
-    if constexpr (std::is_floating_point_v<T>)
-        if (!std::isfinite(value))
-            throw UsageError(std::string(option) + " expects a finite number, got '" +
-                             std::string(text) + "'");
-    return value;
-}
-
-int parseCount(std::string_view option, std::string_view text, int minimum) {
-    const int value = parseNumber<int>(option, text);
-    if (value < minimum)
-        throw UsageError(std::string(option) + " must be at least " + std::to_string(minimum) +
-                         ", got " + std::string(text));
-    return value;
-}
-
-glm::dvec3 parseTriple(std::string_view option, std::string_view text, bool signedValues) {
-    glm::dvec3 value;
-    for (int k = 0; k < 3; ++k) {
-        const std::size_t comma = text.find(',');
-        if ((k < 2) != (comma != std::string_view::npos))
-            throw UsageError(std::string(option) + " expects three numbers separated by commas");
-        value[k] = parseNumber<double>(option, text.substr(0, comma));
-        if (!signedValues && value[k] < 0)
-            throw UsageError(std::string(option) + " components must not be negative");
-        text = k < 2 ? text.substr(comma + 1) : std::string_view();
-    }
-    return value;
-}
+using tool_arguments::parseCount;
+using tool_arguments::parseNumber;
+using tool_arguments::parseTriple;
+using tool_arguments::UsageError;
 
 glm::dvec3 parseColour(std::string_view option, std::string_view text) {
     return parseTriple(option, text, false);

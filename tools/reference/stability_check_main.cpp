@@ -2,6 +2,7 @@
 // against the CPU reference's range (reference_range.h), as CSV on stdout. Used by
 // tools/stability and tools/speed_accuracy; the stability test calls the library.
 #include "reference_range.h"
+#include "tool_arguments.h"
 
 #include <charconv>
 #include <cstdio>
@@ -24,18 +25,8 @@ const char* const usage =
     "Prints CSV: image,pixels,differing,wrong,failure_rate,worst_x,worst_y,worst_excess.\n"
     "  --wrong-images DIR   also write DIR/NAME-wrong.png: wrong pixels red, excused yellow\n";
 
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-template <typename T> T parseNumber(std::string_view option, std::string_view text) {
-    T value{};
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size() || text.empty())
-        throw UsageError(std::string(option) + " expects a number, got '" + std::string(text) +
-                         "'");
-    return value;
-}
+using tool_arguments::parseNumber;
+using tool_arguments::UsageError;
 
 } // namespace
 
