@@ -90,6 +90,18 @@ quit_with_key() { # PID ID KEY
     return "$status"
 }
 
+# Ends PID with KEY and records (pass/fail, defined by the test) that it exited with
+# status 0 and that the validation layer said nothing in LOG.
+expect_clean_quit() { # PID ID KEY LOG
+    local pid=$1 id=$2 key=$3 log=$4
+    if quit_with_key "$pid" "$id" "$key"; then
+        if grep -qiE "validation (error|warning)|VUID-" "$log"; then fail "the validation layer spoke (log $log)"
+        else pass "$key quit with status 0, validation silent"; fi
+    else
+        fail "$key did not end the program with status 0 (log $log)"
+    fi
+}
+
 # Sends one key press and release to window ID.
 press_key() { # ID KEY
     timeout 10 xdotool key --window "$1" "$2" || true
