@@ -1,6 +1,6 @@
 // The character level of the scene reader: is the file text at all, where are its
 // tokens and lines, and what number does a token spell. Kept apart from the grammar
-// (scene.cpp) because this is where a 400 MB file spends its time, so each piece here
+// (scene_reader.cpp) because this is where a 400 MB file spends its time, so each piece here
 // is written for speed and tested on its own against the plain definition.
 #pragma once
 

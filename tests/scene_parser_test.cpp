@@ -793,7 +793,7 @@ void expectSameAsOnePass(std::string_view text) {
         ASSERT_EQ(outcome(text, {threads, 1}), expected) << threads << " threads";
 }
 
-// A file of several megabytes is mapped rather than read (host/scene.cpp, FileText) and
+// A file of several megabytes is mapped rather than read (host/scene_file.h) and
 // split among threads: it must load exactly as its text parses in one pass, errors and
 // their line numbers included.
 TEST(SceneLoad, LargeFileLoadsAsItsTextParses) {
