@@ -5,7 +5,7 @@ SCENE ?= scenes/showcase.scene
 SANITIZE_DIR ?= build-sanitize
 FUZZ_SECONDS ?= 60
 
-.PHONY: all build deps bench-deps configure run test check-hardening bench clean
+.PHONY: all build deps bench-deps configure run test check-hardening bench bench-kernel clean
 
 all: build
 
@@ -46,9 +46,18 @@ check-hardening: deps
 
 # Set-up with the benchmark's extras (Embree, matplotlib), build (embree_peer is built
 # once Embree is there), then Raytracer against its CPU peers: tables on stdout, CSV and
-# chart under $(BUILD_DIR)/bench/. BENCH_ARGS=--quick for a fast check.
+# chart under $(BUILD_DIR)/bench/. BENCH_ARGS=--quick for a fast check. Then the kernel's
+# costs (bench-kernel, about 4 minutes on 2 cores).
 bench: bench-deps build
 	@VK_ICD_FILENAMES=$${VK_ICD_FILENAMES:-} tools/bench $(BUILD_DIR)/Raytracer $(BENCH_ARGS)
+	@echo
+	@VK_ICD_FILENAMES=$${VK_ICD_FILENAMES:-} tools/kernel_costs $(BUILD_DIR)/Raytracer $(KERNEL_BENCH_ARGS)
+
+# The robust methods against the naive ones, fp64, and the scene-specialised kernel against
+# the general one: a table of CPU time per frame, CSV in $(BUILD_DIR)/bench/kernel_costs.csv.
+# KERNEL_BENCH_ARGS="--rounds 12" for finer figures.
+bench-kernel: build
+	@VK_ICD_FILENAMES=$${VK_ICD_FILENAMES:-} tools/kernel_costs $(BUILD_DIR)/Raytracer $(KERNEL_BENCH_ARGS)
 
 bench-deps:
 	@tools/install_deps.sh --bench

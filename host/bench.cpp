@@ -42,6 +42,20 @@ double processCpuMilliseconds() {
     return ms(usage.ru_utime) + ms(usage.ru_stime);
 }
 
+// The parts of the kernel compiled out for this scene (traceSpecialization), as a JSON
+// list: what --general-kernel keeps in. Empty: the scene needs the general kernel anyway.
+std::string compiledOutJson(const TraceSpecialization& specialization) {
+    std::string list;
+    auto add = [&](VkBool32 present, const char* name) {
+        if (!present) list += (list.empty() ? "" : ", ") + jsonString(name);
+    };
+    add(specialization.hasSpheres, "spheres");
+    add(specialization.hasTriangles, "triangles");
+    add(specialization.hasSpecular, "highlight");
+    add(specialization.hasMirrors, "mirrors");
+    return "[" + list + "]";
+}
+
 } // namespace
 
 std::chrono::steady_clock::time_point processStartTime() {
@@ -104,6 +118,8 @@ std::string runBenchmark(const Context& context, const Renderer& renderer, Headl
          << ", \"triangle_test\": "
          << jsonString(choiceName(triangleTestNames(), settings.kernel.triangleTest))
          << ", \"offset\": " << jsonString(choiceName(rayOffsetNames(), settings.kernel.offset))
+         << ", \"general_kernel\": " << (settings.generalKernel ? "true" : "false")
+         << ", \"compiled_out\": " << compiledOutJson(renderer.specialization)
          << ", \"primary_rays_per_second\": "
          << jsonNumber(pixels * settings.samplesPerPixel / (wallMedian * 1e-3)) << "}";
     return json.str();

@@ -49,6 +49,7 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
         settings.camera = options.camera;
         settings.shaderDirectory = options.shaderDirectory;
         settings.kernel = options.kernel;
+        settings.generalKernel = options.generalKernel;
         createRenderer(renderer, context, scene, settings);
         createHeadlessTarget(target, context, renderer, options.tileSide);
         if (options.benchFrames > 0) {

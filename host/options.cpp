@@ -200,6 +200,8 @@ Options parseOptions(int argc, const char* const* argv) {
             options.forceWindow = true;
         } else if (arg == "--redraw-continuously") {
             options.redrawContinuously = true;
+        } else if (arg == "--general-kernel") {
+            options.generalKernel = true;
         } else if (parseKernelOption(arg, value, options.kernel)) {
         } else if (arg.size() > 1 && arg[0] == '-') {
             throw UsageError("unknown option '" + arg + "' (see --help)");

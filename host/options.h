@@ -38,6 +38,7 @@ struct Options {
     std::filesystem::path dumpShadersTo;   // --dump-shaders DIR: write the embedded sources, exit
     std::uint32_t benchWindowFrames = 0;   // --bench-window N: time N progressive frames, exit
     KernelChoices kernel; // --sampler, --seed, --precision, --sphere-test, --triangle-test, --offset
+    bool generalKernel = false; // --general-kernel (hidden, for tools/kernel_costs)
 };
 
 // A command line that does not make sense; what() is the message for the user.

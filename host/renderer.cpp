@@ -107,6 +107,13 @@ TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderS
         });
     specialization.hasSpecular = anySpecular;
     specialization.hasMirrors = anySpecular && settings.depth > 0;
+    if (settings.generalKernel) {
+        // Every content-dependent part stays in: the kernel any scene could run. The
+        // spheres' and triangles' loops still stop at their counts (0 for an absent kind),
+        // and the reflection loop at depth and ks = 0, so the image does not change.
+        specialization.hasSpheres = specialization.hasTriangles = VK_TRUE;
+        specialization.hasSpecular = specialization.hasMirrors = VK_TRUE;
+    }
     applyKernelChoices(specialization, settings.kernel);
     return specialization;
 }
@@ -120,6 +127,7 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
                                "(createDevice needFloat64)");
     PackedScene packed = packWithHierarchy(scene, settings.acceleration, precision);
     const TraceSpecialization specialization = traceSpecialization(packed, settings);
+    renderer.specialization = specialization;
     renderer.scene = uploadScene(context, packed);
     packed = PackedScene{}; // the GPU holds it now
     if (settings.shaderDirectory.empty()) {

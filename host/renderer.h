@@ -28,6 +28,10 @@ struct RenderSettings {
     CameraPose camera;                    // the SPEC camera unless --camera-* moved it
     std::filesystem::path shaderDirectory; // --shader-dir: compile from here, uncached; empty: embedded
     bool progressive = false; // the window: keep a per-pixel running sum (BINDING_ACCUMULATION)
+    // --general-kernel (hidden): compile the kernel as if the scene held everything (spheres,
+    // triangles, highlights, mirrors), keeping the method choices and the hierarchy, so that
+    // tools/kernel_costs can measure what specialising for the scene's content gains. Same image.
+    bool generalKernel = false;
 };
 
 // The samples one dispatch adds (GpuFrameParams.tile.zw): count 0 traces all of
@@ -51,6 +55,7 @@ struct Renderer {
     Buffer accumulation;
     VkQueryPool timestampPool = VK_NULL_HANDLE; // two timestamps around the trace
     RenderSettings settings;
+    TraceSpecialization specialization; // what the kernel was compiled for (--bench reports it)
 };
 
 // Compiles the kernel, uploads the scene and creates the output image. The kernel is
@@ -61,7 +66,8 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
                     const RenderSettings& settings);
 
 // The specialization constants for this packed scene and these settings: its primitive
-// kinds, hierarchy, whether any material has ks > 0, and the method choices.
+// kinds, hierarchy, whether any material has ks > 0, and the method choices. With
+// settings.generalKernel the scene's content is ignored (everything on); the rest stays.
 TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderSettings& settings);
 
 // Recreates the output image at a new size (the window was resized).

@@ -304,6 +304,7 @@ void open(Viewer& viewer, const Options& options, const Scene& scene) {
     settings.camera = viewer.camera;
     settings.shaderDirectory = options.shaderDirectory;
     settings.kernel = options.kernel;
+    settings.generalKernel = options.generalKernel;
     settings.progressive = true;
     createRenderer(viewer.renderer, viewer.context, scene, settings);
 
@@ -474,14 +475,11 @@ void writeScreenshot(Viewer& viewer) {
         nextScreenshotPath(std::filesystem::current_path(), options.scenePath.stem().string());
     const Image8 image = readOutputImage(viewer.context, viewer.renderer);
     writePng(path, image);
-    const CameraPose& c = viewer.camera;
+    const std::string command =
+        headlessCommand(options, viewer.camera, image.width, image.height, viewer.sampleTarget);
     std::fprintf(stderr,
-                 "Screenshot: wrote %s (%dx%d, %u samples per pixel); the same image headless: "
-                 "Raytracer %s -o OUT.png --width %d --height %d --spp %u --camera-pos %.17g,%.17g,%.17g "
-                 "--camera-target %.17g,%.17g,%.17g --camera-up %.17g,%.17g,%.17g\n",
-                 path.string().c_str(), image.width, image.height, viewer.sampleTarget,
-                 options.scenePath.string().c_str(), image.width, image.height, viewer.sampleTarget, c.position.x,
-                 c.position.y, c.position.z, c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z);
+                 "Screenshot: wrote %s (%dx%d, %u samples per pixel); the same image headless: %s\n",
+                 path.string().c_str(), image.width, image.height, viewer.sampleTarget, command.c_str());
 }
 
 // --bench-window: once N frames after the first are done, prints one JSON line and ends.

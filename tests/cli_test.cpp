@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+
 namespace {
 
 std::string minimalScene() {
@@ -252,6 +255,61 @@ TEST(CommandLine, GridSamplerMatchesTheReferenceGrid) {
         compareImages(readPng(dir / "out.png"), renderReference(loadScene(scene), settings), 2);
     std::printf("grid spp 16: %s\n", describe(comparison).c_str());
     EXPECT_GE(comparison.fractionWithinTolerance, 0.995);
+}
+
+std::string fileBytes(const std::filesystem::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+// --general-kernel (hidden, for tools/kernel_costs) keeps in what the scene does not need:
+// it may cost time, never a pixel. Without ks: highlight and reflection loop compiled out
+// of the specialised kernel; with ks but no triangles: the triangle code.
+TEST(CommandLine, GeneralKernelGivesTheSameBytes) {
+    std::filesystem::path dir = freshOutputDir("cli/general-kernel");
+    const std::string matte =
+        "3\namb: 0.1 0.1 0.1\nsphere\npos: 0 0 -3\nrad: 1\ndif: 0.5 0.2 0.2\nspe: 0 0 0\nshi: 10\n"
+        "triangle\npos: -2 -1 -4\nnor: 0 1 0\ndif: 0.2 0.5 0.2\nspe: 0 0 0\nshi: 1\n"
+        "pos: 2 -1 -4\nnor: 0 1 0\ndif: 0.2 0.5 0.2\nspe: 0 0 0\nshi: 1\n"
+        "pos: 0 2 -5\nnor: 0 1 0\ndif: 0.2 0.5 0.2\nspe: 0 0 0\nshi: 1\n"
+        "light\npos: 2 2 0\ncol: 1 1 1\n";
+    const std::vector<std::pair<std::string, std::string>> scenes = {{"matte", matte},
+                                                                     {"shiny", minimalScene()}};
+    for (const auto& [name, text] : scenes) {
+        std::filesystem::path scene = dir / (name + ".scene");
+        writeTextFile(scene, text);
+        std::string bytes[2];
+        for (int general = 0; general < 2; ++general) {
+            const std::filesystem::path png = dir / (name + std::to_string(general) + ".png");
+            std::vector<std::string> args = {scene.string(), "-o", png.string(), "--width", "40",
+                                             "--height", "30", "--validate"};
+            if (general) args.push_back("--general-kernel");
+            ProcessResult run = runRaytracer(args);
+            ASSERT_EQ(run.exitCode, 0) << run.err;
+            bytes[general] = fileBytes(png);
+        }
+        EXPECT_FALSE(bytes[0].empty());
+        EXPECT_EQ(bytes[0], bytes[1]) << name << ": the general kernel changed the image";
+
+        // The flag did change the kernel: --bench names what the specialised one left out.
+        for (const bool general : {false, true}) {
+            std::vector<std::string> args = {scene.string(), "--bench", "1", "--width", "16",
+                                             "--height", "16"};
+            if (general) args.push_back("--general-kernel");
+            ProcessResult run = runRaytracer(args);
+            ASSERT_EQ(run.exitCode, 0) << run.err;
+            const std::string json = run.out.substr(run.out.rfind('{'));
+            const std::string specialised =
+                name == "matte" ? "[\"highlight\", \"mirrors\"]" : "[\"triangles\"]";
+            const std::string expected = general ? "\"general_kernel\": true, \"compiled_out\": []"
+                                                 : "\"general_kernel\": false, \"compiled_out\": " + specialised;
+            EXPECT_NE(json.find(expected), std::string::npos) << expected << " missing from " << json;
+        }
+    }
+}
+
+TEST(CommandLine, GeneralKernelIsNotInTheUsageText) {
+    EXPECT_EQ(runRaytracer({"--help"}).out.find("--general-kernel"), std::string::npos);
 }
 
 } // namespace
