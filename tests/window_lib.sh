@@ -102,6 +102,43 @@ expect_clean_quit() { # PID ID KEY LOG
     fi
 }
 
+# Asks window ID to close as a window manager's close button does: a WM_DELETE_WINDOW
+# client message (ICCCM), sent with libX11 through ctypes since Xvfb runs no window
+# manager and xdotool has no such command. Returns non-zero if it could not be sent.
+request_close() { # ID
+    timeout 10 python3 - "$1" <<'PY'
+import ctypes, sys
+x11 = ctypes.CDLL("libX11.so.6")
+x11.XOpenDisplay.restype = ctypes.c_void_p
+x11.XOpenDisplay.argtypes = [ctypes.c_char_p]
+x11.XInternAtom.restype = ctypes.c_ulong
+x11.XInternAtom.argtypes = [ctypes.c_void_p, ctypes.c_char_p, ctypes.c_int]
+x11.XSendEvent.argtypes = [ctypes.c_void_p, ctypes.c_ulong, ctypes.c_int, ctypes.c_long, ctypes.c_void_p]
+x11.XFlush.argtypes = x11.XCloseDisplay.argtypes = [ctypes.c_void_p]
+class ClientMessage(ctypes.Structure):  # XClientMessageEvent
+    _fields_ = [("type", ctypes.c_int), ("serial", ctypes.c_ulong), ("send_event", ctypes.c_int),
+                ("display", ctypes.c_void_p), ("window", ctypes.c_ulong),
+                ("message_type", ctypes.c_ulong), ("format", ctypes.c_int), ("data", ctypes.c_long * 5)]
+class XEvent(ctypes.Union):  # Xlib's XEvent is 24 longs
+    _fields_ = [("xclient", ClientMessage), ("pad", ctypes.c_long * 24)]
+display = x11.XOpenDisplay(None)
+if not display:
+    sys.exit("request_close: cannot open the display")
+window = int(sys.argv[1], 0)
+event = XEvent()
+event.xclient.type = 33  # ClientMessage
+event.xclient.window = window
+event.xclient.message_type = x11.XInternAtom(display, b"WM_PROTOCOLS", 0)
+event.xclient.format = 32
+event.xclient.data[0] = x11.XInternAtom(display, b"WM_DELETE_WINDOW", 0)
+event.xclient.data[1] = 0  # CurrentTime
+if not x11.XSendEvent(display, window, 0, 0, ctypes.byref(event)):
+    sys.exit("request_close: XSendEvent failed")
+x11.XFlush(display)
+x11.XCloseDisplay(display)
+PY
+}
+
 # Sends one key press and release to window ID.
 press_key() { # ID KEY
     timeout 10 xdotool key --window "$1" "$2" || true

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The interactive window under Xvfb: it must show exactly the pixels of the headless
 # PNG (tolerance 0), re-render at the new size after a resize, quit on Escape or Q
-# with status 0, and keep the validation layer silent throughout.
+# with status 0, close cleanly on a window manager's close request while refining, and
+# keep the validation layer silent throughout.
 #
 # usage: window_test.sh RAYTRACER SCENES_DIR OUTPUT_DIR IMAGE_DIFF
 # Needs xvfb-run, xauth, xwininfo (x11-utils), xwd (x11-apps), xdotool and python3
@@ -77,6 +78,53 @@ check_quits() { # PID KEY LOG PREFIX
     fi
 }
 
+# The window manager's close button while frames are being traced: the progressive view of
+# SCENE at 640x480 refines towards 1024 samples, so a frame is in flight when the request
+# comes; the program must finish that frame, release everything and exit with status 0.
+check_close_mid_frame() { # SCENE
+    local scene=$1 name pid id status=0 log=close-window.log deadline
+    name=$(basename "$scene")
+    timeout 120 "$raytracer" "$scene" --validate --width 640 --height 480 > "$log" 2>&1 &
+    pid=$!
+    if ! id=$(wait_for_window "$pid" "$name" "$WINDOW_DEADLINE"); then
+        fail "close-window: no window for $name (log $log)"
+        kill "$pid" 2>/dev/null || true; wait "$pid" || true
+        return
+    fi
+    # Once the first frame is shown (its title names the size), a moment later: a few
+    # samples in, far from 1024, so the device is busy.
+    deadline=$((SECONDS + WINDOW_DEADLINE))
+    while ! timeout 10 xwininfo -root -tree | grep -qF "\"$name - 640x480 - "; do
+        if ! kill -0 "$pid" 2>/dev/null || ((SECONDS > deadline)); then
+            fail "close-window: no frame shown (log $log)"
+            kill "$pid" 2>/dev/null || true; wait "$pid" || true
+            return
+        fi
+        sleep 0.3
+    done
+    sleep 1
+    if ! request_close "$id"; then
+        fail "close-window: the WM_DELETE_WINDOW message could not be sent"
+        kill "$pid" 2>/dev/null || true; wait "$pid" || true
+        return
+    fi
+    deadline=$((SECONDS + EXIT_DEADLINE))
+    while kill -0 "$pid" 2>/dev/null && ((SECONDS <= deadline)); do sleep 0.2; done
+    if kill -0 "$pid" 2>/dev/null; then
+        kill "$pid"; wait "$pid" || true
+        fail "close-window: still running ${EXIT_DEADLINE} s after the close request (log $log)"
+        return
+    fi
+    wait "$pid" || status=$?
+    if ((status != 0)); then
+        fail "close-window: exited with status $status after the close request (log $log)"
+    elif grep -qiE "validation (error|warning)|VUID-" "$log"; then
+        fail "close-window: the validation layer spoke (log $log)"
+    else
+        pass "close-window: the close request mid-refinement ended the program with status 0, validation silent"
+    fi
+}
+
 # Headless renders of SCENE at WxH (no display at all, as a user without one would run it).
 render_headless() { # SCENE W H OUT.PNG
     env -u DISPLAY timeout 120 "$raytracer" "$1" --validate -o "$4" --width "$2" --height "$3" \
@@ -124,6 +172,7 @@ run_inside_xvfb() {
     fi
     test_scene "${scenes[0]}" Escape yes
     [[ ${#scenes[@]} -gt 1 ]] && test_scene "${scenes[1]}" q no
+    check_close_mid_frame "${scenes[0]}"
     echo "window test: $passed passed, $failed failed (images and logs in $output_dir)"
     ((failed == 0))
 }
