@@ -80,26 +80,45 @@ wait_for_window() { # PID NAME SECONDS
     echo "$id"
 }
 
-# Ends PID with KEY sent to window ID; 0 when it exits with status 0 within 30 s.
-quit_with_key() { # PID ID KEY
-    local pid=$1 id=$2 key=$3 status=0
-    timeout 10 xdotool keydown --window "$id" "$key" || true
+# Waits up to 30 s for PID to end and returns its exit status; 124 (after killing it) if
+# it is still running then.
+wait_for_exit() { # PID
+    local pid=$1 status=0
     for _ in $(seq 1 150); do kill -0 "$pid" 2>/dev/null || break; sleep 0.2; done
-    if kill -0 "$pid" 2>/dev/null; then kill "$pid"; wait "$pid" || true; return 1; fi
+    if kill -0 "$pid" 2>/dev/null; then kill "$pid"; wait "$pid" || true; return 124; fi
     wait "$pid" || status=$?
     return "$status"
 }
 
-# Ends PID with KEY and records (pass/fail, defined by the test) that it exited with
-# status 0 and that the validation layer said nothing in LOG.
-expect_clean_quit() { # PID ID KEY LOG
-    local pid=$1 id=$2 key=$3 log=$4
-    if quit_with_key "$pid" "$id" "$key"; then
-        if grep -qiE "validation (error|warning)|VUID-" "$log"; then fail "the validation layer spoke (log $log)"
-        else pass "$key quit with status 0, validation silent"; fi
+# Ends PID with KEY sent to window ID; returns as wait_for_exit.
+quit_with_key() { # PID ID KEY
+    # Key press only: the program quits on the press, so a release would find no window.
+    timeout 10 xdotool keydown --window "$2" "$3" || true
+    wait_for_exit "$1"
+}
+
+# Records a failure (fail, defined by the test), its message starting with PREFIX, unless
+# the program ended cleanly after WHAT: STATUS (from wait_for_exit) 0, and not a word
+# from the validation layer in LOG. Returns 0 when it did.
+judge_exit() { # STATUS LOG PREFIX WHAT
+    local status=$1 log=$2 prefix=$3 what=$4
+    if ((status == 124)); then
+        fail "$prefix: still running 30 s after $what (log $log)"
+    elif ((status != 0)); then
+        fail "$prefix: exited with status $status after $what (log $log)"
+    elif grep -qiE "validation (error|warning)|VUID-" "$log"; then
+        fail "$prefix: the validation layer spoke (log $log)"
     else
-        fail "$key did not end the program with status 0 (log $log)"
+        return 0
     fi
+    return 1
+}
+
+# Ends PID with KEY and records that it exited with status 0, validation silent.
+expect_clean_quit() { # PID ID KEY LOG
+    local status=0
+    quit_with_key "$1" "$2" "$3" || status=$?
+    judge_exit "$status" "$4" quit "the $3 key" && pass "$3 quit with status 0, validation silent"
 }
 
 # Asks window ID to close as a window manager's close button does: a WM_DELETE_WINDOW
