@@ -10,10 +10,9 @@ panel's Pareto front (outlined points: no other setting both faster and more acc
 that panel's metric; the CSV's pareto column is the front on RMSE). Needs matplotlib
 (Debian: python3-matplotlib); exits 3 without it, 1 if there is nothing to plot.
 """
-import argparse
 import sys
 
-from chart_support import import_pyplot, read_rows
+from chart_support import chart_inputs
 
 COLOURS = {"grid": "tab:blue", "stratified": "tab:orange", "r2": "tab:green"}
 MARKERS = {"fp32": "o", "fp64": "s"}
@@ -30,18 +29,10 @@ def pareto_front(points):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("csv")
-    parser.add_argument("png")
-    args = parser.parse_args()
-    plt = import_pyplot("speed_accuracy_chart")
-    if plt is None:
-        return 3
-    rows = read_rows(args.csv)
-    scenes = list(dict.fromkeys(r["scene"] for r in rows))
-    if not scenes:
-        print("speed_accuracy_chart: nothing to plot", file=sys.stderr)
-        return 1
+    inputs = chart_inputs("speed_accuracy_chart", __doc__.splitlines()[0], "scene")
+    if isinstance(inputs, int):
+        return inputs
+    plt, rows, scenes, png = inputs
     fig, axes = plt.subplots(2, len(scenes), figsize=(5.6 * len(scenes), 8.4), squeeze=False)
     for column, scene in enumerate(scenes):
         scene_rows = [r for r in rows if r["scene"] == scene]
@@ -74,7 +65,7 @@ def main():
     fig.suptitle(f"Error against frame time (numbers: spp). Reference: CPU reference renderer, "
                  f"fp64, {reference} spp on a regular grid. {rows[0]['device']}", fontsize=10)
     fig.tight_layout(rect=(0, 0.04, 1, 0.96))
-    fig.savefig(args.png, dpi=110)
+    fig.savefig(png, dpi=110)
     return 0
 
 

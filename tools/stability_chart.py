@@ -10,11 +10,10 @@ naive method alone in fp32 (the others at their defaults), and all of the family
 methods together in fp32 and fp64. Needs matplotlib (Debian: python3-matplotlib); exits 3
 without it, 1 if there is nothing to plot.
 """
-import argparse
 import math
 import sys
 
-from chart_support import import_pyplot, read_rows
+from chart_support import chart_inputs
 
 # (label, colour, style, wanted settings); a line is drawn only where the family varies
 # every method it names.
@@ -51,18 +50,10 @@ def wanted(row, spec, varied):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("csv")
-    parser.add_argument("png")
-    args = parser.parse_args()
-    plt = import_pyplot("stability_chart")
-    if plt is None:
-        return 3
-    rows = read_rows(args.csv)
-    families = list(dict.fromkeys(r["family"] for r in rows))
-    if not families:
-        print("stability_chart: nothing to plot", file=sys.stderr)
-        return 1
+    inputs = chart_inputs("stability_chart", __doc__.splitlines()[0], "family")
+    if isinstance(inputs, int):
+        return inputs
+    plt, rows, families, png = inputs
     columns = min(3, len(families))
     lines_of_panels = math.ceil(len(families) / columns)
     fig, axes = plt.subplots(lines_of_panels, columns, figsize=(5.2 * columns, 3.9 * lines_of_panels),
@@ -96,7 +87,7 @@ def main():
     fig.suptitle("Failure rate against scene scale (wrong: > 2/255 outside the CPU reference's "
                  "range over rays 0.01 px apart)", fontsize=11)
     fig.tight_layout(rect=(0, 0.07, 1, 0.96))
-    fig.savefig(args.png, dpi=110)
+    fig.savefig(png, dpi=110)
     return 0
 
 
