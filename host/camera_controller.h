@@ -1,6 +1,6 @@
 // The camera: where it is and where it looks (--camera-pos, --camera-target, --camera-up),
 // its orientation for the kernel, and the window's orbit and fly controls as pure math on
-// input deltas (host/window.cpp turns mouse and keys into these calls; no GLFW here).
+// input deltas (host/window_input.cpp turns mouse and keys into these calls; no GLFW here).
 #pragma once
 
 #include "scene.h"

@@ -5,7 +5,7 @@
 #include "image_limits.h"
 #include "interrupt.h"
 #include "options.h"
-#include "pipeline_cache.h"
+#include "render_settings.h"
 #include "scene.h"
 #include "shader_compiler.h"
 #include "vk_check.h"
@@ -42,15 +42,7 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
         createDevice(context, options.device, VK_NULL_HANDLE,
                      options.kernel.precision == Precision::Fp64);
         checkImageFits(imageLimitsOf(context), options.width, options.height, true);
-        RenderSettings settings{options.width, options.height, options.samplesPerPixel, options.depth,
-                                glm::vec3(options.background), options.fovDegrees,
-                                options.acceleration};
-        settings.cacheDirectory = userCacheDirectory(options.useCache);
-        settings.camera = options.camera;
-        settings.shaderDirectory = options.shaderDirectory;
-        settings.kernel = options.kernel;
-        settings.generalKernel = options.generalKernel;
-        createRenderer(renderer, context, scene, settings);
+        createRenderer(renderer, context, scene, renderSettingsFrom(options));
         createHeadlessTarget(target, context, renderer, options.tileSide);
         if (options.benchFrames > 0) {
             std::cout << runBenchmark(context, renderer, target, options, startup) << std::endl;
