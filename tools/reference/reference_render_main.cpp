@@ -31,6 +31,7 @@ const char* const usage =
     "  --camera-up X,Y,Z      up direction, default 0,1,0\n";
 
 using tool_arguments::parseCount;
+using tool_arguments::parseFov;
 using tool_arguments::parseNumber;
 using tool_arguments::parseTriple;
 using tool_arguments::UsageError;
@@ -71,9 +72,7 @@ int main(int argc, char** argv) {
             } else if (arg == "--background") {
                 settings.background = parseColour(arg, value());
             } else if (arg == "--fov") {
-                settings.fovDegrees = parseNumber<double>(arg, value());
-                if (!(settings.fovDegrees > 0 && settings.fovDegrees < 180))
-                    throw UsageError("--fov must be between 0 and 180 degrees");
+                settings.fovDegrees = parseFov(arg, value());
             } else if (arg == "--camera-pos") {
                 settings.cameraPosition = parseTriple(arg, value(), true);
                 if (!targetGiven) settings.cameraTarget = settings.cameraPosition + glm::dvec3(0, 0, -1);

@@ -25,7 +25,8 @@ const char* const usage =
     "Prints CSV: image,pixels,differing,wrong,failure_rate,worst_x,worst_y,worst_excess.\n"
     "  --wrong-images DIR   also write DIR/NAME-wrong.png: wrong pixels red, excused yellow\n";
 
-using tool_arguments::parseNumber;
+using tool_arguments::parseCount;
+using tool_arguments::parseFov;
 using tool_arguments::UsageError;
 
 } // namespace
@@ -49,15 +50,15 @@ int main(int argc, char** argv) {
                 std::fputs(usage, stdout);
                 return 0;
             } else if (arg == "--width") {
-                settings.width = parseNumber<int>(arg, value());
+                settings.width = parseCount(arg, value(), 1);
             } else if (arg == "--height") {
-                settings.height = parseNumber<int>(arg, value());
+                settings.height = parseCount(arg, value(), 1);
             } else if (arg == "--fov") {
-                settings.fovDegrees = parseNumber<double>(arg, value());
+                settings.fovDegrees = parseFov(arg, value());
             } else if (arg == "--depth") {
-                settings.depth = parseNumber<int>(arg, value());
+                settings.depth = parseCount(arg, value(), 0);
             } else if (arg == "--tolerance") {
-                tolerance = parseNumber<int>(arg, value());
+                tolerance = parseCount(arg, value(), 0);
             } else if (arg == "--wrong-images") {
                 wrongImages = std::string(value());
             } else if (arg.starts_with("-")) {

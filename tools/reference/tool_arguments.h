@@ -40,6 +40,14 @@ inline int parseCount(std::string_view option, std::string_view text, int minimu
     return value;
 }
 
+// A vertical field of view in degrees, strictly between 0 and 180.
+inline double parseFov(std::string_view option, std::string_view text) {
+    const double degrees = parseNumber<double>(option, text);
+    if (!(degrees > 0 && degrees < 180))
+        throw UsageError(std::string(option) + " must be between 0 and 180 degrees");
+    return degrees;
+}
+
 // Three numbers X,Y,Z; with signedValues false none may be negative (a colour).
 inline glm::dvec3 parseTriple(std::string_view option, std::string_view text, bool signedValues) {
     glm::dvec3 value;
