@@ -4,9 +4,11 @@
 // that minimises the surface-area cost
 //     Ct * A + A_left * N_left + A_right * N_right      (A: half the box surface area)
 // is taken, unless a leaf (cost N * A) is no dearer and small enough. Primitive ids are
-// partitioned in place in one array; nodes are written depth first straight into the
-// output array, so the left child of a node is the next node. The two top levels build
-// their subtrees on separate threads, each into its own array, spliced afterwards.
+// partitioned in place in one array. An interior node is written depth first straight into
+// the output array when it is reached, and gets its children's references (box, node index
+// or leaf) once they are built, so the left child of a node, if interior, is the next node;
+// a leaf is only a reference in its parent (shared.h). The two top levels build their
+// subtrees on separate threads, each into its own array, spliced afterwards.
 //
 // Depth: traversal keeps at most one stack entry per level, so no leaf may be deeper
 // than settings.maxDepth. A node whose SAH split could leave a child deeper than median
@@ -59,17 +61,20 @@ struct Range {
     std::uint32_t size() const { return end - begin; }
 };
 
-gpu::GpuBvhNode makeNode(const Box& box, std::uint32_t index, std::uint32_t count) {
-    return {glm::vec4(box.lo, std::bit_cast<float>(index)),
-            glm::vec4(box.hi, std::bit_cast<float>(count))};
+BvhChild interiorChild(const Box& box, std::uint32_t node) {
+    return {box.lo, box.hi, false, node, 0, false};
 }
 
-void setIndex(gpu::GpuBvhNode& node, std::uint32_t index) {
-    node.boundsMinAndIndex.w = std::bit_cast<float>(index);
+// first is an index into the builder's order until buildBvh renumbers it to a slot.
+BvhChild leafChild(const Box& box, std::uint32_t first, std::uint32_t count, bool spheres) {
+    return {box.lo, box.hi, true, first, count, spheres};
 }
-void setCount(gpu::GpuBvhNode& node, std::uint32_t count) {
-    node.boundsMaxAndCount.w = std::bit_cast<float>(count);
-}
+
+// A built subtree: its reference, as its parent stores it, and the depth of its deepest leaf.
+struct Subtree {
+    BvhChild child;
+    std::uint32_t depth = 0;
+};
 
 class Builder {
   public:
@@ -101,13 +106,10 @@ class Builder {
         return std::uint32_t(std::bit_width(std::max(leaves, 1u) - 1)) + 1;
     }
 
-    // Writes the subtree over range depth first to out; returns the depth of its deepest leaf.
-    std::uint32_t build(const Range& range, std::uint32_t depth,
-                        std::vector<gpu::GpuBvhNode>& out) {
-        const std::uint32_t self = std::uint32_t(out.size());
-        out.push_back(makeNode(range.bounds, 0, 0));
+    // Writes the interior nodes of the subtree over range depth first to out.
+    Subtree build(const Range& range, std::uint32_t depth, std::vector<gpu::GpuBvhNode>& out) {
         const std::uint32_t n = range.size();
-        if (n == 1) return makeLeaf(range, self, depth, out);
+        if (n == 1) return makeLeaf(range, depth, out);
 
         const int axis = longestAxis(range.centroids);
         const float extent = range.centroids.hi[axis] - range.centroids.lo[axis];
@@ -116,25 +118,27 @@ class Builder {
         bool withinDepth = split && depth + 1 + levelsNeeded(std::max(left.size(), right.size())) <=
                                         settings_.maxDepth;
         if (n <= settings_.maxLeafSize && (!split || !withinDepth))
-            return makeLeaf(range, self, depth, out);
+            return makeLeaf(range, depth, out);
         if (!withinDepth) medianSplit(range, axis, extent > 0.0f, left, right);
 
-        std::uint32_t subtreeDepth = 0;
+        const std::uint32_t self = std::uint32_t(out.size());
+        out.emplace_back();
+        Subtree leftTree, rightTree;
         if (depth < kParallelDepth && n >= kParallelMinimum && settings_.threads > 1) {
             std::vector<gpu::GpuBvhNode> leftNodes, rightNodes;
             auto leftTask =
                 std::async(std::launch::async, [&] { return build(left, depth + 1, leftNodes); });
-            std::uint32_t rightDepth = build(right, depth + 1, rightNodes);
-            subtreeDepth = std::max(leftTask.get(), rightDepth);
-            splice(leftNodes, out);
-            setIndex(out[self], std::uint32_t(out.size()));
-            splice(rightNodes, out);
+            rightTree = build(right, depth + 1, rightNodes);
+            leftTree = leftTask.get();
+            splice(leftNodes, leftTree.child, out);
+            splice(rightNodes, rightTree.child, out);
         } else {
-            subtreeDepth = build(left, depth + 1, out);
-            setIndex(out[self], std::uint32_t(out.size()));
-            subtreeDepth = std::max(subtreeDepth, build(right, depth + 1, out));
+            leftTree = build(left, depth + 1, out);
+            rightTree = build(right, depth + 1, out);
         }
-        return subtreeDepth;
+        setBvhChild(out[self], BvhSide::Left, leftTree.child);
+        setBvhChild(out[self], BvhSide::Right, rightTree.child);
+        return {interiorChild(range.bounds, self), std::max(leftTree.depth, rightTree.depth)};
     }
 
     std::vector<std::uint32_t> order; // primitive ids; each leaf owns a consecutive range
@@ -235,35 +239,40 @@ class Builder {
         right = rangeOf(mid, range.end);
     }
 
-    // Node self becomes a leaf over range; a range holding both kinds becomes an interior
-    // node over a sphere leaf and a triangle leaf, since a leaf indexes one array.
-    std::uint32_t makeLeaf(const Range& range, std::uint32_t self, std::uint32_t depth,
-                           std::vector<gpu::GpuBvhNode>& out) {
+    // A leaf over range; a range holding both kinds becomes an interior node over a sphere
+    // leaf and a triangle leaf, since a leaf indexes one array.
+    Subtree makeLeaf(const Range& range, std::uint32_t depth, std::vector<gpu::GpuBvhNode>& out) {
         auto first = order.begin() + range.begin, last = order.begin() + range.end;
         auto isSphere = [&](std::uint32_t id) { return id < sphereCount_; };
         auto middle = std::partition(first, last, isSphere);
-        if (middle == first || middle == last) {
-            std::uint32_t kind = middle == last ? BVH_LEAF_SPHERES : 0u;
-            setIndex(out[self], range.begin); // an index into order until finish() renumbers it
-            setCount(out[self], range.size() | kind);
-            return depth;
-        }
+        if (middle == first || middle == last)
+            return {leafChild(range.bounds, range.begin, range.size(), middle == last), depth};
         std::uint32_t mid = std::uint32_t(middle - order.begin());
         Range spheres = rangeOf(range.begin, mid), triangles = rangeOf(mid, range.end);
-        out.push_back(makeNode(spheres.bounds, spheres.begin, spheres.size() | BVH_LEAF_SPHERES));
-        setIndex(out[self], std::uint32_t(out.size()));
-        out.push_back(makeNode(triangles.bounds, triangles.begin, triangles.size()));
-        return depth + 1;
+        const std::uint32_t self = std::uint32_t(out.size());
+        out.emplace_back();
+        setBvhChild(out[self], BvhSide::Left,
+                    leafChild(spheres.bounds, spheres.begin, spheres.size(), true));
+        setBvhChild(out[self], BvhSide::Right,
+                    leafChild(triangles.bounds, triangles.begin, triangles.size(), false));
+        return {interiorChild(range.bounds, self), depth + 1};
     }
 
-    // Appends a subtree built in its own array, moving its right-child indices along.
-    static void splice(const std::vector<gpu::GpuBvhNode>& subtree,
+    // Appends a subtree built in its own array, moving its node indices along: those of its
+    // nodes' interior children and that of its own reference, if interior.
+    static void splice(const std::vector<gpu::GpuBvhNode>& subtree, BvhChild& root,
                        std::vector<gpu::GpuBvhNode>& out) {
         const std::uint32_t offset = std::uint32_t(out.size());
         for (gpu::GpuBvhNode node : subtree) {
-            if (!isLeaf(node)) setIndex(node, rightChild(node) + offset);
+            for (BvhSide side : {BvhSide::Left, BvhSide::Right}) {
+                BvhChild child = bvhChild(node, side);
+                if (child.leaf) continue;
+                child.index += offset;
+                setBvhChild(node, side, child);
+            }
             out.push_back(node);
         }
+        if (!root.leaf) root.index += offset;
     }
 
     const float* boxes_;
@@ -272,22 +281,47 @@ class Builder {
     std::vector<float> centroids_; // 3 floats per primitive
 };
 
+// The two sides of a node's fields (shared.h).
+struct ChildFields {
+    const glm::vec4& minAndIndex;
+    const glm::vec4& maxAndCount;
+};
+
+ChildFields fields(const gpu::GpuBvhNode& node, BvhSide side) {
+    if (side == BvhSide::Left) return {node.leftMinAndIndex, node.leftMaxAndCount};
+    return {node.rightMinAndIndex, node.rightMaxAndCount};
+}
+
 } // namespace
 
-bool isLeaf(const gpu::GpuBvhNode& node) {
-    return std::bit_cast<std::uint32_t>(node.boundsMaxAndCount.w) != 0;
+BvhChild bvhChild(const gpu::GpuBvhNode& node, BvhSide side) {
+    const ChildFields f = fields(node, side);
+    const std::uint32_t word = std::bit_cast<std::uint32_t>(f.maxAndCount.w);
+    BvhChild child{glm::vec3(f.minAndIndex), glm::vec3(f.maxAndCount)};
+    child.index = std::bit_cast<std::uint32_t>(f.minAndIndex.w);
+    child.leaf = (word & BVH_LEAF) != 0;
+    if (child.leaf) {
+        child.count = word & BVH_COUNT_MASK;
+        child.spheres = (word & BVH_LEAF_SPHERES) != 0;
+    }
+    return child;
 }
-std::uint32_t rightChild(const gpu::GpuBvhNode& node) {
-    return std::bit_cast<std::uint32_t>(node.boundsMinAndIndex.w);
-}
-std::uint32_t firstPrimitive(const gpu::GpuBvhNode& node) {
-    return rightChild(node);
-}
-std::uint32_t primitiveCount(const gpu::GpuBvhNode& node) {
-    return std::bit_cast<std::uint32_t>(node.boundsMaxAndCount.w) & BVH_COUNT_MASK;
-}
-bool holdsSpheres(const gpu::GpuBvhNode& node) {
-    return (std::bit_cast<std::uint32_t>(node.boundsMaxAndCount.w) & BVH_LEAF_SPHERES) != 0;
+
+void setBvhChild(gpu::GpuBvhNode& node, BvhSide side, const BvhChild& child) {
+    if (child.leaf && child.count > BVH_COUNT_MASK)
+        throw std::invalid_argument("setBvhChild: a leaf of " + std::to_string(child.count) +
+                                    " primitives does not fit its count field");
+    const std::uint32_t word =
+        child.leaf ? BVH_LEAF | child.count | (child.spheres ? BVH_LEAF_SPHERES : 0u) : 0u;
+    const glm::vec4 minAndIndex(child.lo, std::bit_cast<float>(child.index));
+    const glm::vec4 maxAndCount(child.hi, std::bit_cast<float>(word));
+    if (side == BvhSide::Left) {
+        node.leftMinAndIndex = minAndIndex;
+        node.leftMaxAndCount = maxAndCount;
+    } else {
+        node.rightMinAndIndex = minAndIndex;
+        node.rightMaxAndCount = maxAndCount;
+    }
 }
 
 Bvh buildBvh(const PrimitiveBounds& input, const BvhSettings& settings) {
@@ -305,19 +339,36 @@ Bvh buildBvh(const PrimitiveBounds& input, const BvhSettings& settings) {
         throw std::invalid_argument("buildBvh: " + std::to_string(n) +
                                     " primitives cannot fit in " +
                                     std::to_string(settings.maxDepth) + " levels");
-    bvh.nodes.reserve(n);
-    bvh.depth = builder.build(root, 0, bvh.nodes);
-
-    // Leaves in array order are the leaf order: give each its slots in its kind's array.
-    for (gpu::GpuBvhNode& node : bvh.nodes) {
-        if (!isLeaf(node)) continue;
-        const std::uint32_t begin = firstPrimitive(node), count = primitiveCount(node);
-        std::vector<std::uint32_t>& slots =
-            holdsSpheres(node) ? bvh.sphereOrder : bvh.triangleOrder;
-        const std::uint32_t idBase = holdsSpheres(node) ? 0 : input.sphereCount;
-        setIndex(node, std::uint32_t(slots.size()));
-        for (std::uint32_t i = begin; i < begin + count; ++i)
-            slots.push_back(builder.order[i] - idBase);
+    // One interior node per leaf, less one; leaves are about half full.
+    bvh.nodes.reserve(n / std::max(settings.maxLeafSize / 2, 1u) + 1);
+    const Subtree tree = builder.build(root, 0, bvh.nodes);
+    bvh.depth = tree.depth;
+    if (tree.child.leaf) {
+        // The shader starts at node 0, an interior node: the lone leaf gets one, with an
+        // empty leaf beside it whose box is a point (shared.h).
+        BvhChild empty = leafChild(Box{tree.child.lo, tree.child.lo}, 0, 0, false);
+        bvh.nodes.emplace_back();
+        setBvhChild(bvh.nodes[0], BvhSide::Left, tree.child);
+        setBvhChild(bvh.nodes[0], BvhSide::Right, empty);
     }
+
+    // The leaves in depth-first order are the leaf order, and their ranges of builder.order
+    // follow one another in that order: a primitive's slot is the number of its kind before
+    // it in builder.order, and a leaf's first slot that of its first primitive.
+    std::vector<std::uint32_t> slotAt(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t id = builder.order[i];
+        const bool sphere = id < input.sphereCount;
+        std::vector<std::uint32_t>& slots = sphere ? bvh.sphereOrder : bvh.triangleOrder;
+        slotAt[i] = std::uint32_t(slots.size());
+        slots.push_back(sphere ? id : id - input.sphereCount);
+    }
+    for (gpu::GpuBvhNode& node : bvh.nodes)
+        for (BvhSide side : {BvhSide::Left, BvhSide::Right}) {
+            BvhChild child = bvhChild(node, side);
+            if (!child.leaf || child.count == 0) continue;
+            child.index = slotAt[child.index];
+            setBvhChild(node, side, child);
+        }
     return bvh;
 }

@@ -1,5 +1,6 @@
 // Bounding volume hierarchy over spheres and triangles together, built on the host with
-// a binned surface-area heuristic and flattened into the GpuBvhNode array of shared.h.
+// a binned surface-area heuristic and flattened into the GpuBvhNode array of shared.h
+// (two-wide nodes holding both children's boxes; leaves live in their parent's reference).
 // Knows nothing of Vulkan or of the scene file: it sees one box per primitive.
 #pragma once
 
@@ -38,21 +39,30 @@ struct BvhSettings {
 };
 
 struct Bvh {
-    std::vector<gpu::GpuBvhNode> nodes; // depth first; node 0 is the root
+    std::vector<gpu::GpuBvhNode> nodes; // interior nodes, depth first; node 0 is the root
     // Leaf order: slot k of the packed sphere (triangle) array holds the sphere (triangle)
     // that was number sphereOrder[k] (triangleOrder[k]) in the input. Leaves index slots.
     std::vector<std::uint32_t> sphereOrder;
     std::vector<std::uint32_t> triangleOrder;
-    std::uint32_t depth = 0; // of the deepest leaf
+    std::uint32_t depth = 0; // of the deepest leaf (a root that is a leaf: 0)
 };
 
 // Builds the hierarchy. Every primitive ends in exactly one leaf; every leaf holds one
 // kind and its slots are consecutive. An empty input gives an empty hierarchy.
 Bvh buildBvh(const PrimitiveBounds& bounds, const BvhSettings& settings = {});
 
-// The fields of a node as the shader reads them.
-bool isLeaf(const gpu::GpuBvhNode& node);
-std::uint32_t rightChild(const gpu::GpuBvhNode& node);     // interior nodes
-std::uint32_t firstPrimitive(const gpu::GpuBvhNode& node); // leaves
-std::uint32_t primitiveCount(const gpu::GpuBvhNode& node); // leaves
-bool holdsSpheres(const gpu::GpuBvhNode& node);            // leaves
+// A node's child reference (shared.h), decoded: what the shader reads from one side.
+struct BvhChild {
+    glm::vec3 lo{0.0f}, hi{0.0f}; // its box
+    bool leaf = false;
+    std::uint32_t index = 0; // interior: its node index; leaf: its first primitive slot
+    std::uint32_t count = 0; // leaf: its primitive count (0: the empty leaf of a lone root leaf)
+    bool spheres = false;    // leaf: its primitives are spheres, else triangles
+    bool operator==(const BvhChild&) const = default;
+};
+
+enum class BvhSide { Left, Right };
+
+BvhChild bvhChild(const gpu::GpuBvhNode& node, BvhSide side);
+// Stores child on that side of node; throws when a leaf's count does not fit its word.
+void setBvhChild(gpu::GpuBvhNode& node, BvhSide side, const BvhChild& child);

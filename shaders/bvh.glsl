@@ -54,10 +54,6 @@ bool hitBox(BoxRay ray, rvec3 lo, rvec3 hi, real tLimit, out real tEntry) {
     return tEntry <= tExit * SLAB_EXIT_SCALE;
 }
 
-// The node's two halves as the shader uses them.
-uint nodeIndexField(GpuBvhNode node) { return floatBitsToUint(node.boundsMinAndIndex.w); }
-uint nodeCountField(GpuBvhNode node) { return floatBitsToUint(node.boundsMaxAndCount.w); }
-
 // The next real above a finite positive t (FLOAT_MAX gives +inf in fp32): a limit that
 // lets a primitive at exactly t through, for the tie rule below.
 #ifdef RT_FP64
@@ -71,14 +67,14 @@ double nextRealUp(double t) {
 float nextRealUp(float t) { return uintBitsToFloat(floatBitsToUint(t) + 1u); }
 #endif
 
-// The primitives of one leaf against the ray. Closest hit: equal distances go to the
-// lower (kind, index), spheres first, which is what the brute-force loops give (they take
-// primitives in that order and keep the first of equals), so both paths agree exactly.
-// Returns true in any-hit mode when something was hit. The kind test folds away for a
-// scene of one kind (specialization constants, trace.comp).
-bool intersectLeaf(Ray ray, ShearedRay sheared, GpuBvhNode leaf, bool anyHitMode, inout Hit hit) {
-    uint first = nodeIndexField(leaf);
-    uint count = nodeCountField(leaf);
+// The primitives of one leaf against the ray, from its child reference: the first primitive
+// and the leaf word (shared.h). Closest hit: equal distances go to the lower (kind, index),
+// spheres first, which is what the brute-force loops give (they take primitives in that
+// order and keep the first of equals), so both paths agree exactly. Returns true in any-hit
+// mode when something was hit. The kind test folds away for a scene of one kind
+// (specialization constants, trace.comp).
+bool intersectLeaf(Ray ray, ShearedRay sheared, uint first, uint count, bool anyHitMode,
+                   inout Hit hit) {
     uint end = first + (count & BVH_COUNT_MASK);
     real limit = anyHitMode ? hit.t : nextRealUp(hit.t);
     real t;
@@ -105,31 +101,44 @@ bool intersectLeaf(Ray ray, ShearedRay sheared, GpuBvhNode leaf, bool anyHitMode
     return false;
 }
 
+// A child reference as traversal carries it: x the node index or first primitive, y the
+// leaf word (0 for an interior node), the .w components of GpuBvhNode (shared.h).
+uvec2 leftChild(GpuBvhNode node) {
+    return floatBitsToUint(vec2(node.leftMinAndIndex.w, node.leftMaxAndCount.w));
+}
+uvec2 rightChild(GpuBvhNode node) {
+    return floatBitsToUint(vec2(node.rightMinAndIndex.w, node.rightMaxAndCount.w));
+}
+
 // Iterative depth-first traversal with a fixed stack (the builder keeps the depth within
-// BVH_STACK_SIZE). At an interior node both children's boxes are tested; the nearer hit
-// child is visited next and the other pushed with its entry distance, and a popped node
-// whose entry lies beyond the closest hit so far is skipped. Any-hit mode (shadow rays)
+// BVH_STACK_SIZE). A step fetches one node, which holds both children's boxes (Aila &
+// Laine's layout, shared.h), and tests both; the nearer hit child is visited next and the
+// other's reference pushed with its entry distance, and a popped child whose entry lies
+// beyond the closest hit so far is skipped. A leaf is known from its reference, so its
+// primitives are tested without fetching anything but them. Any-hit mode (shadow rays)
 // returns at the first hit found. hit.t is the limit on entry (the light's distance for
 // shadow rays, FLOAT_MAX for closest hit); returns whether any-hit mode found something.
 //
-// Loop shape "while-while" (Aila & Laine, "Understanding the Efficiency of Ray Traversal
-// on GPUs", HPG 2009): an inner loop walks interior nodes until the ray stands at a leaf,
-// then the leaf is tested. lavapipe runs 8 rays as one SIMD vector and executes both sides
-// of every branch, masked; with one loop holding both the interior and the leaf code
-// ("if-if"), each step paid for a leaf test too. Same images, 5-25% faster (README).
+// Loop shape "while-while" (Aila & Laine, HPG 2009): an inner loop walks interior nodes
+// until the ray stands at a leaf, then the leaf is tested. lavapipe runs 8 rays as one
+// SIMD vector and executes both sides of every branch, masked; with one loop holding both
+// the interior and the leaf code ("if-if"), each step paid for a leaf test too. Same
+// images, 5-25% faster (README).
 bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
     ShearedRay sheared = shearRay(ray);
     BoxRay slabRay = boxRay(ray);
-    uint stackNode[BVH_STACK_SIZE];
+    // Pending children: reference and entry distance. Arrays of scalars: an array of uvec2
+    // for the references cost lavapipe 4% more instructions on table.scene.
+    uint stackIndex[BVH_STACK_SIZE];
+    uint stackWord[BVH_STACK_SIZE];
     real stackEntry[BVH_STACK_SIZE];
     uint stackSize = 0u;
-    uint index = 0u;
-    GpuBvhNode node = bvhNodes[0];
-    bool popNext = false; // the current node is done with: take the next from the stack
+    uvec2 child = uvec2(0u); // the root: interior node 0
+    bool popNext = false;    // the current child is done with: take the next from the stack
     for (;;) {
         for (;;) {
             if (popNext) {
-                // The nearest pending node that can still hold something nearer than the hit.
+                // The nearest pending child that can still hold something nearer than the hit.
                 popNext = false;
                 bool found = false;
                 while (stackSize > 0u && !found) {
@@ -137,34 +146,30 @@ bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
                     found = stackEntry[stackSize] <= hit.t * SLAB_EXIT_SCALE;
                 }
                 if (!found) return false;
-                index = stackNode[stackSize];
-                node = bvhNodes[index];
+                child = uvec2(stackIndex[stackSize], stackWord[stackSize]);
             }
-            if (nodeCountField(node) != 0u) break; // a leaf
-            uint leftIndex = index + 1u;
-            uint rightIndex = nodeIndexField(node);
-            GpuBvhNode left = bvhNodes[leftIndex];
-            GpuBvhNode right = bvhNodes[rightIndex];
+            if (child.y != 0u) break; // a leaf
+            GpuBvhNode node = bvhNodes[child.x];
             real leftEntry, rightEntry;
-            bool hitLeft = hitBox(slabRay, rvec3(left.boundsMinAndIndex.xyz),
-                                  rvec3(left.boundsMaxAndCount.xyz), hit.t, leftEntry);
-            bool hitRight = hitBox(slabRay, rvec3(right.boundsMinAndIndex.xyz),
-                                   rvec3(right.boundsMaxAndCount.xyz), hit.t, rightEntry);
+            bool hitLeft = hitBox(slabRay, rvec3(node.leftMinAndIndex.xyz),
+                                  rvec3(node.leftMaxAndCount.xyz), hit.t, leftEntry);
+            bool hitRight = hitBox(slabRay, rvec3(node.rightMinAndIndex.xyz),
+                                   rvec3(node.rightMaxAndCount.xyz), hit.t, rightEntry);
             if (hitLeft && hitRight) {
                 bool rightFirst = rightEntry < leftEntry;
-                stackNode[stackSize] = rightFirst ? leftIndex : rightIndex;
+                uvec2 far = rightFirst ? leftChild(node) : rightChild(node);
+                stackIndex[stackSize] = far.x;
+                stackWord[stackSize] = far.y;
                 stackEntry[stackSize] = rightFirst ? leftEntry : rightEntry;
                 ++stackSize;
-                index = rightFirst ? rightIndex : leftIndex;
-                node = rightFirst ? right : left;
+                child = rightFirst ? rightChild(node) : leftChild(node);
             } else if (hitLeft || hitRight) {
-                index = hitLeft ? leftIndex : rightIndex;
-                node = hitLeft ? left : right;
+                child = hitLeft ? leftChild(node) : rightChild(node);
             } else {
                 popNext = true;
             }
         }
-        if (intersectLeaf(ray, sheared, node, anyHitMode, hit)) return true;
+        if (intersectLeaf(ray, sheared, child.x, child.y, anyHitMode, hit)) return true;
         popNext = true;
     }
 }

@@ -61,10 +61,12 @@ using uint = std::uint32_t;
 // Traversal keeps the far child of each interior node on a fixed stack of this many
 // entries, at most one per level, so the builder keeps every leaf within this depth.
 #define BVH_STACK_SIZE 32
-// A leaf's boundsMaxAndCount.w: its primitive count, and this bit when they are spheres
-// (every leaf holds one kind). 0 marks an interior node.
-#define BVH_LEAF_SPHERES 0x80000000u
-#define BVH_COUNT_MASK 0x7fffffffu
+// A child reference's count word (GpuBvhNode's ...MaxAndCount.w): 0 for an interior node;
+// for a leaf, BVH_LEAF, its primitive count, and BVH_LEAF_SPHERES when they are spheres
+// (every leaf holds one kind). Nonzero exactly for a leaf.
+#define BVH_LEAF 0x80000000u
+#define BVH_LEAF_SPHERES 0x40000000u
+#define BVH_COUNT_MASK 0x3fffffffu
 
 // A material, shared by every sphere and vertex that uses it. 32 bytes.
 struct GpuMaterial {
@@ -78,16 +80,25 @@ struct GpuLight {
     vec4 color;    // rgb, w unused
 };
 
-// A hierarchy node. 32 bytes, two to a 64-byte cache line. The uint in each .w is stored
-// with its bit pattern (std::bit_cast on the host, floatBitsToUint in GLSL).
-// Interior node: its left child is the next node in the array (depth-first order); .w of
-// boundsMinAndIndex is the index of the right child, .w of boundsMaxAndCount is 0.
-// Leaf: .w of boundsMinAndIndex is the first of its primitives, which are consecutive in
-// the sphere or triangle arrays (the packer stores them in leaf order); .w of
-// boundsMaxAndCount is their count, with BVH_LEAF_SPHERES set for spheres.
+// An interior node of the hierarchy, holding the boxes of both its children (Aila & Laine,
+// "Understanding the Efficiency of Ray Traversal on GPUs", HPG 2009). 64 bytes, one cache
+// line: a traversal step fetches one node and tests both child boxes. Leaves are no nodes
+// of their own; a child's reference says where its primitives are, so they are tested
+// without a further fetch. The uints in the .w components are stored with their bit
+// patterns (std::bit_cast on the host, floatBitsToUint in GLSL).
+// Child reference, interior child: ...MinAndIndex.w is its node index, ...MaxAndCount.w 0.
+// Leaf child: ...MinAndIndex.w is the first of its primitives, which are consecutive in
+// the sphere or triangle arrays (the packer stores them in leaf order); ...MaxAndCount.w
+// is BVH_LEAF | count, with BVH_LEAF_SPHERES for spheres.
+// Nodes are depth first from the root, node 0; an interior left child is the next node.
+// A hierarchy that is a single leaf is one node: that leaf on the left and, on the right,
+// an empty leaf (count 0) whose box is a point; a ray rarely enters it, and then it costs
+// one stack entry and no primitive test.
 struct GpuBvhNode {
-    vec4 boundsMinAndIndex; // box min xyz; right child (interior) or first primitive (leaf)
-    vec4 boundsMaxAndCount; // box max xyz; 0 (interior) or count | kind bit (leaf)
+    vec4 leftMinAndIndex;  // left child's box min xyz; its node index or first primitive
+    vec4 leftMaxAndCount;  // left child's box max xyz; 0 (interior) or its leaf word
+    vec4 rightMinAndIndex; // the same for the right child
+    vec4 rightMaxAndCount;
 };
 
 // Per-dispatch parameters, passed as push constants (at most 128 bytes).

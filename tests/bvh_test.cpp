@@ -1,11 +1,14 @@
 // The hierarchy builder (host/bvh.cpp) and the packer's leaf order, without a GPU: the
-// tree is well formed, covers every primitive once, bounds what it holds, respects the
-// traversal stack's depth limit on adversarial input, and splits where SAH should.
+// tree is well formed in the two-wide layout of shared.h (child references round-trip,
+// leaves in their parent's reference), covers every primitive once, bounds what it holds,
+// numbers leaves in depth-first order, respects the traversal stack's depth limit on
+// adversarial input, and splits where SAH should.
 #include "bvh.h"
 #include "scene_gpu.h"
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -18,8 +21,30 @@ struct Box3 {
     glm::vec3 lo, hi;
 };
 
-Box3 nodeBox(const gpu::GpuBvhNode& node) {
-    return {glm::vec3(node.boundsMinAndIndex), glm::vec3(node.boundsMaxAndCount)};
+constexpr BvhSide kSides[] = {BvhSide::Left, BvhSide::Right};
+
+Box3 childBox(const BvhChild& child) {
+    return {child.lo, child.hi};
+}
+
+Box3 childBox(const gpu::GpuBvhNode& node, BvhSide side) {
+    return childBox(bvhChild(node, side));
+}
+
+// The leaf children of every node, in array order.
+std::vector<BvhChild> leafChildren(const Bvh& bvh) {
+    std::vector<BvhChild> leaves;
+    for (const gpu::GpuBvhNode& node : bvh.nodes)
+        for (BvhSide side : kSides)
+            if (bvhChild(node, side).leaf) leaves.push_back(bvhChild(node, side));
+    return leaves;
+}
+
+// A hierarchy that is one leaf: one node, the leaf on the left and an empty leaf on the right.
+bool isLoneLeaf(const Bvh& bvh) {
+    return bvh.nodes.size() == 1 && bvhChild(bvh.nodes[0], BvhSide::Left).leaf &&
+           bvhChild(bvh.nodes[0], BvhSide::Right).leaf &&
+           bvhChild(bvh.nodes[0], BvhSide::Right).count == 0;
 }
 
 Box3 inputBox(const PrimitiveBounds& bounds, std::uint32_t id) {
@@ -63,8 +88,16 @@ PrimitiveBounds randomScene(std::uint32_t spheres, std::uint32_t triangles) {
     return bounds;
 }
 
+Box3 grown(const Box3& a, const Box3& b) {
+    return {glm::min(a.lo, b.lo), glm::max(a.hi, b.hi)};
+}
+
+constexpr Box3 kNothing{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
+
 // What a walk from the root finds, checking the layout on the way: every node reached
-// exactly once, left child next, right child after the left subtree.
+// exactly once, an interior left child next, an interior right child after the left
+// subtree, every child box around its whole subtree, and leaves numbered in depth-first
+// order (each kind's slots handed out leaf by leaf, as the tie rule of bvh.glsl expects).
 struct Walk {
     std::uint32_t depth = 0;
     std::uint32_t leaves = 0;
@@ -76,43 +109,58 @@ Walk walkTree(const Bvh& bvh, const PrimitiveBounds& input) {
     walk.sphereSlotHits.assign(bvh.sphereOrder.size(), 0);
     walk.triangleSlotHits.assign(bvh.triangleOrder.size(), 0);
     std::vector<int> visits(bvh.nodes.size(), 0);
-    // Returns the index just past the subtree, so the layout can be checked.
-    std::function<std::uint32_t(std::uint32_t, std::uint32_t)> visit = [&](std::uint32_t index,
-                                                                           std::uint32_t depth) {
-        EXPECT_LT(index, bvh.nodes.size());
-        if (index >= bvh.nodes.size()) return index;
-        ++visits[index];
-        const gpu::GpuBvhNode& node = bvh.nodes[index];
+    std::uint32_t nextSlot[2] = {0, 0}; // triangles, spheres
+    auto visitLeaf = [&](const BvhChild& leaf, std::uint32_t depth) {
+        Box3 bounds = kNothing;
+        ++walk.leaves;
         walk.depth = std::max(walk.depth, depth);
-        if (isLeaf(node)) {
-            ++walk.leaves;
-            std::vector<int>& hits =
-                holdsSpheres(node) ? walk.sphereSlotHits : walk.triangleSlotHits;
-            const std::vector<std::uint32_t>& order =
-                holdsSpheres(node) ? bvh.sphereOrder : bvh.triangleOrder;
-            const std::uint32_t idBase = holdsSpheres(node) ? 0 : input.sphereCount;
-            EXPECT_GT(primitiveCount(node), 0u);
-            for (std::uint32_t slot = firstPrimitive(node);
-                 slot < firstPrimitive(node) + primitiveCount(node); ++slot) {
-                EXPECT_LT(slot, hits.size());
-                if (slot >= hits.size()) break;
-                ++hits[slot];
-                EXPECT_TRUE(contains(nodeBox(node), inputBox(input, order[slot] + idBase)))
-                    << "leaf " << index << " does not contain its primitive in slot " << slot;
-            }
-            return index + 1;
+        std::vector<int>& hits = leaf.spheres ? walk.sphereSlotHits : walk.triangleSlotHits;
+        const std::vector<std::uint32_t>& order =
+            leaf.spheres ? bvh.sphereOrder : bvh.triangleOrder;
+        const std::uint32_t idBase = leaf.spheres ? 0 : input.sphereCount;
+        EXPECT_EQ(leaf.index, nextSlot[leaf.spheres]) << "leaves out of depth-first order";
+        nextSlot[leaf.spheres] = leaf.index + leaf.count;
+        for (std::uint32_t slot = leaf.index; slot < leaf.index + leaf.count; ++slot) {
+            EXPECT_LT(slot, hits.size());
+            if (slot >= hits.size()) break;
+            ++hits[slot];
+            bounds = grown(bounds, inputBox(input, order[slot] + idBase));
         }
-        const std::uint32_t left = index + 1, right = rightChild(node);
-        EXPECT_TRUE(contains(nodeBox(node), nodeBox(bvh.nodes[left]))) << "node " << index;
-        EXPECT_TRUE(right < bvh.nodes.size() && contains(nodeBox(node), nodeBox(bvh.nodes[right])))
-            << "node " << index;
-        const std::uint32_t afterLeft = visit(left, depth + 1);
-        EXPECT_EQ(afterLeft, right)
-            << "the right child of node " << index << " does not follow its left subtree";
-        return visit(right, depth + 1);
+        return bounds;
     };
-    if (!bvh.nodes.empty()) {
-        EXPECT_EQ(visit(0, 0), bvh.nodes.size());
+    // Returns the index just past the subtree, so the layout can be checked, and the box
+    // of the primitives below.
+    std::function<std::uint32_t(std::uint32_t, std::uint32_t, Box3&)> visit =
+        [&](std::uint32_t index, std::uint32_t depth, Box3& bounds) {
+            EXPECT_LT(index, bvh.nodes.size());
+            if (index >= bvh.nodes.size()) return index;
+            ++visits[index];
+            std::uint32_t next = index + 1;
+            for (BvhSide side : kSides) {
+                const BvhChild child = bvhChild(bvh.nodes[index], side);
+                Box3 below = kNothing;
+                if (child.leaf) {
+                    EXPECT_GT(child.count, 0u) << "an empty leaf below node " << index;
+                    below = visitLeaf(child, depth + 1);
+                } else {
+                    EXPECT_EQ(child.index, next)
+                        << "node " << index << "'s " << (side == BvhSide::Left ? "left" : "right")
+                        << " child is not where depth-first order puts it";
+                    next = visit(child.index, depth + 1, below);
+                }
+                EXPECT_TRUE(contains(childBox(child), below))
+                    << "a child box of node " << index << " does not bound its subtree";
+                bounds = grown(bounds, below);
+            }
+            return next;
+        };
+    if (isLoneLeaf(bvh)) {
+        ++visits[0];
+        const BvhChild leaf = bvhChild(bvh.nodes[0], BvhSide::Left);
+        EXPECT_TRUE(contains(childBox(leaf), visitLeaf(leaf, 0)));
+    } else if (!bvh.nodes.empty()) {
+        Box3 bounds = kNothing;
+        EXPECT_EQ(visit(0, 0, bounds), bvh.nodes.size());
     }
     for (std::size_t i = 0; i < visits.size(); ++i)
         EXPECT_EQ(visits[i], 1) << "node " << i;
@@ -141,13 +189,46 @@ void expectWellFormed(const Bvh& bvh, const PrimitiveBounds& input,
     EXPECT_LE(walk.depth, settings.maxDepth);
 }
 
+TEST(BvhNode, ChildReferencesRoundTripOnBothSides) {
+    const BvhChild children[] = {
+        {glm::vec3(-1, -2, -3), glm::vec3(4, 5, 6), false, 7, 0, false},   // interior
+        {glm::vec3(0), glm::vec3(1), true, 123456, 8, true},               // sphere leaf
+        {glm::vec3(-0.5f), glm::vec3(0.25f), true, 0xfffffff0u, 1, false}, // triangle leaf
+        {glm::vec3(2), glm::vec3(3), true, 0, BVH_COUNT_MASK, true},       // the largest count
+        {glm::vec3(2), glm::vec3(2), true, 0, 0, false},                   // the empty leaf
+    };
+    for (const BvhChild& left : children)
+        for (const BvhChild& right : children) {
+            gpu::GpuBvhNode node{};
+            setBvhChild(node, BvhSide::Left, left);
+            setBvhChild(node, BvhSide::Right, right);
+            EXPECT_EQ(bvhChild(node, BvhSide::Left), left);
+            EXPECT_EQ(bvhChild(node, BvhSide::Right), right);
+        }
+}
+
+TEST(BvhNode, LeafWordIsWhatTheShaderReads) {
+    gpu::GpuBvhNode node{};
+    setBvhChild(node, BvhSide::Right, {glm::vec3(0), glm::vec3(1), true, 42, 5, true});
+    setBvhChild(node, BvhSide::Left, {glm::vec3(0), glm::vec3(1), false, 3, 0, false});
+    EXPECT_EQ(std::bit_cast<std::uint32_t>(node.rightMinAndIndex.w), 42u);
+    EXPECT_EQ(std::bit_cast<std::uint32_t>(node.rightMaxAndCount.w),
+              BVH_LEAF | BVH_LEAF_SPHERES | 5u);
+    EXPECT_EQ(std::bit_cast<std::uint32_t>(node.leftMinAndIndex.w), 3u);
+    EXPECT_EQ(std::bit_cast<std::uint32_t>(node.leftMaxAndCount.w), 0u); // interior: 0
+    EXPECT_EQ(glm::vec3(node.rightMaxAndCount), glm::vec3(1));
+    EXPECT_THROW(setBvhChild(node, BvhSide::Left,
+                             {glm::vec3(0), glm::vec3(1), true, 0, BVH_COUNT_MASK + 1, false}),
+                 std::invalid_argument);
+}
+
 TEST(Bvh, EveryPrimitiveInExactlyOneLeafAndEveryBoxBoundsItsContents) {
     PrimitiveBounds input = randomScene(300, 5000);
     Bvh bvh = buildBvh(input);
     expectWellFormed(bvh, input);
     Walk walk = walkTree(bvh, input);
     EXPECT_GE(walk.leaves, 5300 / BvhSettings{}.maxLeafSize); // no leaf above maxLeafSize
-    EXPECT_EQ(bvh.nodes.size(), 2 * walk.leaves - 1);         // a binary tree
+    EXPECT_EQ(bvh.nodes.size(), walk.leaves - 1);             // a binary tree's interior nodes
 }
 
 TEST(Bvh, LeavesStayWithinTheLeafSizeUnlessForced) {
@@ -157,10 +238,8 @@ TEST(Bvh, LeavesStayWithinTheLeafSizeUnlessForced) {
         settings.maxLeafSize = maxLeafSize;
         Bvh bvh = buildBvh(input, settings);
         expectWellFormed(bvh, input, settings);
-        for (const gpu::GpuBvhNode& node : bvh.nodes)
-            if (isLeaf(node)) {
-                EXPECT_LE(primitiveCount(node), maxLeafSize);
-            }
+        for (const BvhChild& leaf : leafChildren(bvh))
+            EXPECT_LE(leaf.count, maxLeafSize);
     }
 }
 
@@ -169,10 +248,23 @@ TEST(Bvh, EmptyAndSingleInputs) {
     PrimitiveBounds one;
     addBox(one, glm::vec3(0), glm::vec3(1));
     Bvh bvh = buildBvh(one);
-    ASSERT_EQ(bvh.nodes.size(), 1u);
-    EXPECT_TRUE(isLeaf(bvh.nodes[0]));
-    EXPECT_EQ(primitiveCount(bvh.nodes[0]), 1u);
-    EXPECT_FALSE(holdsSpheres(bvh.nodes[0]));
+    expectWellFormed(bvh, one);
+    ASSERT_TRUE(isLoneLeaf(bvh)); // the shader starts at node 0, so the root leaf gets one
+    const BvhChild leaf = bvhChild(bvh.nodes[0], BvhSide::Left);
+    EXPECT_EQ(leaf.count, 1u);
+    EXPECT_EQ(leaf.index, 0u);
+    EXPECT_FALSE(leaf.spheres);
+    EXPECT_EQ(bvh.depth, 0u);
+    // The empty leaf beside it: a point box, so that rays hardly ever enter it.
+    const BvhChild empty = bvhChild(bvh.nodes[0], BvhSide::Right);
+    EXPECT_EQ(empty.lo, empty.hi);
+
+    PrimitiveBounds sphere;
+    sphere.sphereCount = 1;
+    addBox(sphere, glm::vec3(0), glm::vec3(1));
+    Bvh sphereBvh = buildBvh(sphere);
+    ASSERT_TRUE(isLoneLeaf(sphereBvh));
+    EXPECT_TRUE(bvhChild(sphereBvh.nodes[0], BvhSide::Left).spheres);
 }
 
 TEST(Bvh, MixedSmallRangeIsSplitIntoOneLeafPerKind) {
@@ -182,8 +274,14 @@ TEST(Bvh, MixedSmallRangeIsSplitIntoOneLeafPerKind) {
     addBox(input, glm::vec3(0.5f), glm::vec3(1.5f)); // a triangle overlapping it
     Bvh bvh = buildBvh(input);
     expectWellFormed(bvh, input);
-    ASSERT_EQ(bvh.nodes.size(), 3u);
-    EXPECT_TRUE(holdsSpheres(bvh.nodes[1]) != holdsSpheres(bvh.nodes[2]));
+    ASSERT_EQ(bvh.nodes.size(), 1u); // one node over two leaves, spheres first
+    const BvhChild left = bvhChild(bvh.nodes[0], BvhSide::Left);
+    const BvhChild right = bvhChild(bvh.nodes[0], BvhSide::Right);
+    ASSERT_TRUE(left.leaf && right.leaf);
+    EXPECT_TRUE(left.spheres);
+    EXPECT_FALSE(right.spheres);
+    EXPECT_EQ(left.count + right.count, 2u);
+    EXPECT_EQ(bvh.depth, 1u);
 }
 
 TEST(Bvh, IdenticalTrianglesStayWithinTheStackDepth) {
@@ -232,8 +330,9 @@ TEST(Bvh, SahSeparatesTwoClusters) {
     }
     Bvh bvh = buildBvh(input);
     expectWellFormed(bvh, input);
-    ASSERT_FALSE(isLeaf(bvh.nodes[0]));
-    Box3 left = nodeBox(bvh.nodes[1]), right = nodeBox(bvh.nodes[rightChild(bvh.nodes[0])]);
+    ASSERT_FALSE(isLoneLeaf(bvh));
+    Box3 left = childBox(bvh.nodes[0], BvhSide::Left),
+         right = childBox(bvh.nodes[0], BvhSide::Right);
     if (left.lo.x > right.lo.x) std::swap(left, right);
     EXPECT_LT(left.hi.x, 2.0f) << "the low cluster's box reaches into the gap";
     EXPECT_GT(right.lo.x, 99.0f) << "the high cluster's box reaches into the gap";
@@ -245,8 +344,8 @@ TEST(Bvh, SahMakesALeafWhenSplittingDoesNotPay) {
     for (int i = 0; i < 4; ++i)
         addBox(input, glm::vec3(0.001f * float(i)), glm::vec3(1.0f + 0.001f * float(i)));
     Bvh bvh = buildBvh(input);
-    ASSERT_EQ(bvh.nodes.size(), 1u);
-    EXPECT_EQ(primitiveCount(bvh.nodes[0]), 4u);
+    ASSERT_TRUE(isLoneLeaf(bvh));
+    EXPECT_EQ(bvhChild(bvh.nodes[0], BvhSide::Left).count, 4u);
 }
 
 TEST(Bvh, TwoHundredThousandTrianglesBuild) {
@@ -292,13 +391,10 @@ TEST(LeafOrder, KeepsEveryPrimitiveAndItsMaterialAndLeavesIndexTheReorderedArray
     EXPECT_EQ(packed.vertexPositions, original.vertexPositions); // vertices stay shared, untouched
     // The reordered scene's own boxes are inside the leaves that now index them.
     const PrimitiveBounds reordered = primitiveBounds(packed);
-    for (const gpu::GpuBvhNode& node : bvh.nodes) {
-        if (!isLeaf(node)) continue;
-        for (std::uint32_t slot = firstPrimitive(node);
-             slot < firstPrimitive(node) + primitiveCount(node); ++slot)
-            EXPECT_TRUE(contains(nodeBox(node),
-                                 inputBox(reordered, holdsSpheres(node) ? slot : 40 + slot)));
-    }
+    for (const BvhChild& leaf : leafChildren(bvh))
+        for (std::uint32_t slot = leaf.index; slot < leaf.index + leaf.count; ++slot)
+            EXPECT_TRUE(
+                contains(childBox(leaf), inputBox(reordered, leaf.spheres ? slot : 40 + slot)));
 }
 
 TEST(LeafOrder, SphereBoxesHaveAMarginAndTriangleBoxesAreExact) {
