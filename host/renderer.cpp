@@ -83,7 +83,7 @@ PackedScene packWithHierarchy(const Scene& scene, Acceleration acceleration, Pre
     applyLeafOrder(packed, bvh);
     const std::size_t primitives = packed.spheres.size() + packed.triangleVertices.size() / 3;
     if (useHierarchy(acceleration, primitives)) {
-        std::fprintf(stderr, "Acceleration: BVH, %zu nodes, depth %u, built in %.1f ms\n", bvh.nodes.size(),
+        std::fprintf(stderr, "Acceleration: BVH, %zu two-wide nodes, depth %u, built in %.1f ms\n", bvh.nodes.size(),
                      bvh.depth, buildMs);
         packed.bvhNodes = std::move(bvh.nodes);
     } else {
