@@ -4,7 +4,7 @@
 # what a user without a GPU sees; on a real GPU run it on the real display instead.
 #
 # usage: tools/window_fps.sh RAYTRACER [FRAMES] [WIDTHxHEIGHT] [SCENE...]
-#   default: 30 frames at 640x480 over /work/shared/scenes/*.scene (the classic scenes).
+#   default: 30 frames at 640x480 over ../shared/scenes/*.scene beside the checkout (the classic scenes).
 # Prints one JSON line per scene (--bench-window) and a table at the end.
 set -euo pipefail
 
