@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Smoke test of tools/kernel_costs: one round at 64x48 on two scenes; the CSV must hold one
-row per scene and variant with the documented columns, and sane values.
+row per scene and variant with the documented columns, and sane values. Then --baseline
+with --variants: two programs compared alone.
 
     kernel_costs_test.py RAYTRACER SOURCE_DIR OUT_DIR
 """
@@ -67,8 +68,36 @@ def main():
     if row[("test1.scene", "general")]["compiled_out"] != "triangles" or \
             row[("mesh.scene", "general")]["compiled_out"] != "":
         fail("compiled_out not carried from the report")
+    check_baseline(binary, source, out)
     print("OK")
     return 0
+
+
+def check_baseline(binary, source, out):
+    """--baseline OTHER --variants baseline: the default and the other program only, on one
+    scene; the other program's rows name it. (The same binary stands in for an old build.)"""
+    csv_path = out / "baseline.csv"
+    scene = source / "scenes" / "mesh.scene"
+    command = [sys.executable, source / "tools" / "kernel_costs", binary, "--rounds", "2",
+               "--frames", "1", "--width", "64", "--height", "48", "--scenes", scene,
+               "--baseline", binary, "--variants", "baseline", "--csv", csv_path]
+    print("running:", " ".join(map(str, command)), flush=True)
+    result = subprocess.run(command, capture_output=True, text=True)
+    print(result.stdout, result.stderr, sep="\n")
+    if result.returncode != 0:
+        fail(f"--baseline: exit status {result.returncode}")
+    with open(csv_path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if [r["variant"] for r in rows] != ["default", "baseline"]:
+        fail(f"--baseline --variants baseline: rows {[r['variant'] for r in rows]}")
+    baseline = rows[1]
+    if baseline["status"] != "ok" or baseline["runs"] != "2" or \
+            baseline["flags"] != f"program {pathlib.Path(binary).resolve()}" or \
+            not float(baseline["ms_min"]) > 0:
+        fail(f"insane baseline row {baseline}")
+    unknown = subprocess.run(command[:-2] + ["--variants", "nonsense"], capture_output=True, text=True)
+    if unknown.returncode != 2 or "unknown variant 'nonsense'" not in unknown.stderr:
+        fail(f"an unknown variant was not a usage error: {unknown.returncode} {unknown.stderr}")
 
 
 if __name__ == "__main__":
