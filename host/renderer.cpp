@@ -126,8 +126,8 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
         throw std::logic_error("--precision fp64, but the device was created without shaderFloat64 "
                                "(createDevice needFloat64)");
     PackedScene packed = packWithHierarchy(scene, settings.acceleration, precision);
-    const TraceSpecialization specialization = traceSpecialization(packed, settings);
-    renderer.specialization = specialization;
+    renderer.specialization = traceSpecialization(packed, settings);
+    const TraceSpecialization& specialization = renderer.specialization;
     renderer.scene = uploadScene(context, packed);
     packed = PackedScene{}; // the GPU holds it now
     if (settings.shaderDirectory.empty()) {
