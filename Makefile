@@ -32,7 +32,7 @@ test: deps build
 
 # The whole suite again, built by clang with AddressSanitizer and UndefinedBehaviorSanitizer
 # in $(SANITIZE_DIR) (any report fails its test), then the scene parser fuzzed for
-# FUZZ_SECONDS (any crash, leak, hang or out-of-memory fails). See README "Hardening".
+# FUZZ_SECONDS (any crash, leak, hang or out-of-memory fails). See docs/testing.md.
 check-hardening: deps
 	@start=$$(date +%s); \
 	    cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRAYTRACER_SANITIZE=ON \

@@ -1,6 +1,6 @@
 #include "bench.h"
 
-#include "bench_json.h"
+#include "base/bench_json.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,8 +1,8 @@
 // --bench N: timed headless frames after a warm-up, reported as one JSON line.
 #pragma once
 
-#include "headless.h"
-#include "options.h"
+#include "render/headless.h"
+#include "cli/options.h"
 
 #include <chrono>
 #include <string>
@@ -20,7 +20,7 @@ struct StartupTimes {
 };
 
 // Renders warm-up frames, then options.benchFrames timed ones, and returns the
-// JSON object of SPEC.md ("--bench") with parse_ms, per-frame submissions, the process's
+// JSON object of docs/performance.md ("--bench") with parse_ms, per-frame submissions, the process's
 // CPU time per timed frame (cpu_ms_per_frame: the trace's cost on a CPU driver, robust to
 // other load) and the kernel choices added.
 std::string runBenchmark(const Context& context, const Renderer& renderer, HeadlessTarget& target,

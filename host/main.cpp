@@ -1,15 +1,16 @@
 // Raytracer: arguments to a mode (help, headless PNG, benchmark, window), inside
 // one try/catch that turns every failure into a message and an exit status.
 #include "bench.h"
-#include "headless.h"
-#include "image_limits.h"
-#include "interrupt.h"
-#include "options.h"
-#include "render_settings.h"
-#include "scene.h"
-#include "shader_compiler.h"
-#include "vk_check.h"
-#include "window.h"
+#include "render/headless.h"
+#include "gpu/image_limits.h"
+#include "render/interrupt.h"
+#include "cli/options.h"
+#include "cli/render_settings.h"
+#include "scene/scene_loader.h"
+#include "gpu/shader_compiler.h"
+#include "gpu/vk_check.h"
+#include "window/window.h"
+#include "render/kernel_sources.h"
 
 #include <chrono>
 #include <cstdio>
@@ -43,7 +44,7 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
                      options.kernel.precision == Precision::Fp64);
         checkImageFits(imageLimitsOf(context), options.width, options.height, true);
         createRenderer(renderer, context, scene, renderSettingsFrom(options));
-        createHeadlessTarget(target, context, renderer, options.tileSide);
+        createHeadlessTarget(target, context, renderer, options.regionSide);
         if (options.benchFrames > 0) {
             std::cout << runBenchmark(context, renderer, target, options, startup) << std::endl;
         } else {

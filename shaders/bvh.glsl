@@ -1,4 +1,4 @@
-// Walking the bounding volume hierarchy (host/bvh.cpp builds it; node layout in shared.h),
+// Walking the bounding volume hierarchy (host/render/bvh.cpp builds it; node layout in shared.h),
 // and the two scene queries shading uses, which walk it or test every primitive.
 // Needs: Ray (camera.glsl), the primitive tests and brute-force loops (intersect.glsl),
 // the node buffer and the specialization constants useHierarchy, sceneHasSpheres and
@@ -123,7 +123,7 @@ uvec2 rightChild(GpuBvhNode node) {
 // until the ray stands at a leaf, then the leaf is tested. lavapipe runs 8 rays as one
 // SIMD vector and executes both sides of every branch, masked; with one loop holding both
 // the interior and the leaf code ("if-if"), each step paid for a leaf test too. Same
-// images, 5-25% faster (README).
+// images, and faster on lavapipe (tools/kernel_costs --baseline compares two builds).
 bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
     ShearedRay sheared = shearRay(ray);
     BoxRay slabRay = boxRay(ray);

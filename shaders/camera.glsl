@@ -1,4 +1,4 @@
-// Primary rays (the SPEC's pinhole camera); sample positions inside a pixel: sampling.glsl.
+// Primary rays (the pinhole camera of docs/model.md); sample positions inside a pixel: sampling.glsl.
 //
 //            +y
 //             ^        image plane z = -1, eye at the origin looking down -z
@@ -23,10 +23,10 @@ vec3 rotateByQuaternion(vec4 q, vec3 v) {
     return v + 2.0 * cross(q.xyz, cross(q.xyz, v) + q.w * v);
 }
 
-// The primary ray through the point (u, v) of pixel (i, j): the SPEC's camera formula in
+// The primary ray through the point (u, v) of pixel (i, j): the camera formula of docs/model.md in
 // camera space, then placed in the world by params.cameraOrigin and cameraOrientation
 // (--camera-pos/-target/-up). The direction is rotated before it is normalised, so the
-// SPEC camera (identity, origin 0) gives exactly the SPEC's rays.
+// default camera (identity, origin 0) gives exactly the the default camera's rays.
 Ray cameraRay(uvec2 pixel, vec2 uv) {
     vec2 size = vec2(params.image.xy);
     vec2 ndc = vec2(2.0 * (float(pixel.x) + uv.x) / size.x - 1.0,

@@ -127,7 +127,7 @@ bool intersectTriangleWatertight(ShearedRay ray, rvec3 a, rvec3 b, rvec3 c, real
 // can miss both (a crack). Only an exactly zero determinant counts as parallel (the
 // paper's epsilon of 1e-6 would reject every triangle of a scene scaled small), so what
 // it differs in from the watertight test is watertightness itself. A zero-area triangle
-// is never hit, as the SPEC's model asks.
+// is never hit, as the model of docs/model.md asks.
 bool intersectTriangleMollerTrumbore(Ray ray, rvec3 a, rvec3 b, rvec3 c, real tMax,
                                      out real t, out rvec3 barycentric) {
     rvec3 edge1 = b - a, edge2 = c - a;

@@ -1,5 +1,5 @@
 // Sample positions inside a pixel (--spp N, --sampler, --seed). One sample per pixel is
-// always the pixel's centre (SPEC). With N > 1, sampleOffset(pixel, s, N) is sample s:
+// always the pixel's centre (docs/model.md). With N > 1, sampleOffset(pixel, s, N) is sample s:
 //  - grid:       the centre of cell s of the most nearly square grid of exactly N cells;
 //  - stratified: a jittered point in that cell, the jitter hashed from (pixel, s, seed);
 //  - r2:         point s of Roberts' R2 sequence ("The Unreasonable Effectiveness of

@@ -1,4 +1,4 @@
-// Surface data at a hit and Phong shading with hard shadows, as the SPEC defines them.
+// Surface data at a hit and Phong shading with hard shadows, as docs/model.md defines them.
 // Needs: Ray, Hit (camera.glsl, intersect.glsl), anyHit (bvh.glsl), offsetRayOrigin (ray_offset.glsl).
 
 // Everything shading needs about a hit point.

@@ -1,10 +1,10 @@
 // The single definition of everything the host and the shaders must agree on:
 // binding numbers, workgroup size, limits and the layout of every GPU struct.
-// Included by C++ (host/scene_gpu.h) and by GLSL (trace.comp).
+// Included by C++ (host/render/scene_packing.h) and by GLSL (trace.comp).
 //
 // Rules for the structs (std430): only vec4, uvec4 and scalars in groups of four,
 // never vec3 (std430 pads it to 16 bytes, glm::vec3 is 12), never bool.
-// The C++ side pins every size with static_assert in host/scene_gpu.cpp.
+// The C++ side pins every size with static_assert in host/render/scene_packing.cpp.
 #ifndef RAYTRACER_SHARED_H
 #define RAYTRACER_SHARED_H
 
@@ -29,7 +29,7 @@ using uint = std::uint32_t;
 #define MAX_DEPTH 64
 
 // Descriptor set 0. Each scene array has its own binding; all of them are
-// sub-ranges of one device buffer (see host/scene_gpu.cpp).
+// sub-ranges of one device buffer (see host/render/scene_packing.cpp).
 #define BINDING_OUTPUT_IMAGE 0     // rgba8 storage image the kernel writes
 #define BINDING_SPHERES 1          // vec4 per sphere: centre xyz, radius w
 #define BINDING_SPHERE_MATERIALS 2 // uint per sphere: index into materials
@@ -38,15 +38,15 @@ using uint = std::uint32_t;
 #define BINDING_VERTEX_NORMALS 5   // 3 floats per vertex: normal xyz as given, tightly packed
 #define BINDING_MATERIALS 6        // GpuMaterial per distinct material
 #define BINDING_LIGHTS 7           // GpuLight per light
-#define BINDING_BVH_NODES 8        // GpuBvhNode per hierarchy node, depth first (host/bvh.h)
+#define BINDING_BVH_NODES 8        // GpuBvhNode per hierarchy node, depth first (host/render/bvh.h)
 #define BINDING_ACCUMULATION 9     // vec4 per pixel, row major: the window's running sum of samples
 #define BINDING_COUNT 10
 
-// Specialization constant ids (host/pipeline.h, TraceSpecialization): bool unless marked uint.
+// Specialization constant ids (host/render/trace_pipeline.h, TraceSpecialization): bool unless marked uint.
 #define SPEC_USE_HIERARCHY 0 // walk the BVH (else test every primitive: scenes too small for one)
 #define SPEC_HAS_SPHERES 1   // the scene holds spheres (else their code is compiled out)
 #define SPEC_HAS_TRIANGLES 2 // the scene holds triangles (likewise)
-// The method choices of the command line (host/kernel_choices.h), and more of the scene.
+// The method choices of the command line (host/render/kernel_choices.h), and more of the scene.
 #define SPEC_SAMPLER 3             // uint, SAMPLER_*: sample positions inside a pixel (--sampler)
 #define SPEC_STABLE_SPHERE_TEST 4  // bool: Ray Tracing Gems ch. 7, else the textbook quadratic
 #define SPEC_WATERTIGHT_TRIANGLES 5 // bool: Woop et al. 2013, else Moller-Trumbore
@@ -57,7 +57,7 @@ using uint = std::uint32_t;
 #define SAMPLER_STRATIFIED 1u
 #define SAMPLER_R2 2u
 
-// The bounding volume hierarchy (host/bvh.cpp builds it, shaders/bvh.glsl walks it).
+// The bounding volume hierarchy (host/render/bvh.cpp builds it, shaders/bvh.glsl walks it).
 // Traversal keeps the far child of each interior node on a fixed stack of this many
 // entries, at most one per level, so the builder keeps every leaf within this depth.
 #define BVH_STACK_SIZE 32
@@ -106,15 +106,15 @@ struct GpuFrameParams {
     vec4 background; // rgb colour of rays that hit nothing, w unused
     vec4 ambient;    // rgb ambient light added once per shading point, w unused
     vec4 camera;     // x: aspect * tan(fov/2), y: tan(fov/2), zw unused
-    vec4 cameraOrigin;      // the eye in world space: xyz, w unused (0 for the SPEC camera)
-    vec4 cameraOrientation; // unit quaternion xyzw, camera space to world (0,0,0,1 for the SPEC camera)
+    vec4 cameraOrigin;      // the eye in world space: xyz, w unused (0 for the default camera)
+    vec4 cameraOrientation; // unit quaternion xyzw, camera space to world (0,0,0,1 for the default camera)
     uvec4 image;     // x: width, y: height, z: samples per pixel n (sampleOffset's n), w: reflection depth
     uvec4 counts;    // x: spheres, y: triangles, z: lights, w: sampling seed (--seed)
     // xy: first pixel of this dispatch. zw: the samples it adds: z the index of the first,
     // w how many; w == 0 traces all image.z samples in one pass (headless). With w > 0
     // (the window's progressive view) the sum of samples 0..z-1 is read from and the sum
     // of 0..z+w-1 written to BINDING_ACCUMULATION, and the output shows their average.
-    uvec4 tile;
+    uvec4 dispatch;
 };
 
 GPU_NAMESPACE_END

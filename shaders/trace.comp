@@ -1,6 +1,6 @@
 #version 460
-// The ray tracing kernel: one invocation per pixel of the current tile. Whitted-style
-// tracing of the SPEC's model: primary ray, Phong shading with hard shadows, mirror
+// The ray tracing kernel: one invocation per pixel of the current dispatch. Whitted-style
+// tracing of the model of docs/model.md: primary ray, Phong shading with hard shadows, mirror
 // reflections as an iterative loop with a throughput, clamped samples averaged, written as
 // an exact 8-bit value.
 #extension GL_GOOGLE_include_directive : require
@@ -25,7 +25,7 @@ layout(constant_id = SPEC_HAS_TRIANGLES) const bool sceneHasTriangles = true;
 layout(constant_id = SPEC_HAS_MIRRORS) const bool sceneHasMirrors = true;
 layout(constant_id = SPEC_HAS_SPECULAR) const bool sceneHasSpecular = true;
 
-// The method choices of the command line (host/kernel_choices.h); the defaults are the
+// The method choices of the command line (host/render/kernel_choices.h); the defaults are the
 // robust methods, and the unchosen method is compiled out.
 layout(constant_id = SPEC_SAMPLER) const uint samplerKind = SAMPLER_R2;
 layout(constant_id = SPEC_STABLE_SPHERE_TEST) const bool stableSphereTest = true;
@@ -60,7 +60,7 @@ layout(set = 0, binding = BINDING_MATERIALS, std430) readonly buffer MaterialBuf
 layout(set = 0, binding = BINDING_LIGHTS, std430) readonly buffer LightBuffer { GpuLight lights[]; };
 // The hierarchy over spheres and triangles, depth first (bound only when useHierarchy is 1).
 layout(set = 0, binding = BINDING_BVH_NODES, std430) readonly buffer BvhNodeBuffer { GpuBvhNode bvhNodes[]; };
-// The window's running sum of each pixel's samples (see GpuFrameParams.tile); a dummy
+// The window's running sum of each pixel's samples (see GpuFrameParams.dispatch); a dummy
 // when tracing in one pass.
 layout(set = 0, binding = BINDING_ACCUMULATION, std430) buffer AccumulationBuffer { vec4 accumulation[]; };
 
@@ -71,7 +71,7 @@ layout(set = 0, binding = BINDING_ACCUMULATION, std430) buffer AccumulationBuffe
 #include "bvh.glsl"
 #include "shade.glsl"
 
-// Colour seen along a primary ray: the SPEC's recursion
+// Colour seen along a primary ray: the model's recursion
 //   colour = (1 - ks) local + ks colour(reflected)   (local alone when ks == 0 or at depth D)
 // unrolled into a loop that carries the product of the ks seen so far (throughput).
 vec3 traceRay(Ray ray) {
@@ -97,7 +97,7 @@ vec3 traceRay(Ray ray) {
 // invocations consecutive in x as one 8-wide SIMD vector (whatever the workgroup shape, as
 // long as its x size is a multiple of 8), so plain x/y would give each vector a row of 8
 // pixels; rearranged, it gets a 4 x 2 block, whose rays stay together longer in the
-// hierarchy: about 5% fewer SIMD traversal steps, and 2-10% faster on lavapipe (README).
+// hierarchy: fewer SIMD traversal steps, and faster on lavapipe (tools/kernel_costs --baseline).
 #if WORKGROUP_SIZE_X != 8 || WORKGROUP_SIZE_Y % 2 != 0
 #error "pixelInTile assumes 8-wide workgroups with an even height"
 #endif
@@ -106,18 +106,18 @@ uvec2 pixelInTile(uvec2 local) {
 }
 
 void main() {
-    uvec2 pixel = params.tile.xy + gl_WorkGroupID.xy * uvec2(WORKGROUP_SIZE_X, WORKGROUP_SIZE_Y) +
+    uvec2 pixel = params.dispatch.xy + gl_WorkGroupID.xy * uvec2(WORKGROUP_SIZE_X, WORKGROUP_SIZE_Y) +
                   pixelInTile(gl_LocalInvocationID.xy);
     if (any(greaterThanEqual(pixel, params.image.xy))) return;
 
-    // Samples first..end-1 of n. One pass (tile.w == 0, headless) sums all n here; the
-    // window's progressive view adds tile.w of them per dispatch to the running sum in
+    // Samples first..end-1 of n. One pass (dispatch.w == 0, headless) sums all n here; the
+    // window's progressive view adds dispatch.w of them per dispatch to the running sum in
     // accumulation[], so after the last one it holds the same floats, added in the same
     // order, as the one-pass sum: the final image is the headless one, bit for bit.
     uint samples = max(params.image.z, 1u);
-    bool progressive = params.tile.w != 0u;
-    uint first = progressive ? params.tile.z : 0u;
-    uint end = progressive ? min(first + params.tile.w, samples) : samples;
+    bool progressive = params.dispatch.w != 0u;
+    uint first = progressive ? params.dispatch.z : 0u;
+    uint end = progressive ? min(first + params.dispatch.w, samples) : samples;
     uint slot = pixel.y * params.image.x + pixel.x;
     vec3 sum = vec3(0.0);
     if (progressive && first != 0u) sum = accumulation[slot].rgb;

@@ -1,7 +1,7 @@
-// The camera as pure math: orientation of a pose (exactly the identity for the SPEC
+// The camera as pure math: orientation of a pose (exactly the identity for the default
 // camera), orbit, dolly, fly and look, and the scene bounds the window's controls use.
 // No Vulkan, no window.
-#include "camera_controller.h"
+#include "scene/camera.h"
 
 #include <gtest/gtest.h>
 
@@ -32,7 +32,7 @@ TEST(CameraOrientation, TargetFurtherAlongMinusZIsStillExactlyTheIdentity) {
     pose.target = {0.0, 0.0, -7.25};
     const glm::dquat q = cameraOrientation(pose);
     EXPECT_EQ(q, glm::dquat(1.0, 0.0, 0.0, 0.0));
-    // The window's orbit pivot keeps the SPEC orientation exactly too.
+    // The window's orbit pivot keeps the default orientation exactly too.
     SceneBounds bounds{{0.3, -0.2, -5.0}, 2.0};
     EXPECT_EQ(cameraOrientation(pivotAtScene(pose, bounds, 0.01)), glm::dquat(1.0, 0.0, 0.0, 0.0));
 }

@@ -1,7 +1,8 @@
 // The camera options end to end: a moved camera (--camera-pos/-target/-up) renders what
-// the double-precision reference sees from there, the SPEC camera given explicitly is
+// the double-precision reference sees from there, the default camera given explicitly is
 // the default image byte for byte, and impossible cameras are usage errors.
 #include "test_support.h"
+#include "scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 
@@ -63,7 +64,7 @@ TEST_P(MovedCameraMatchesReference, PixelByPixel) {
     EXPECT_GE(comparison.fractionWithinTolerance, kMinimumMatch)
         << "max diff " << comparison.maxChannelDifference << " at (" << comparison.worstX << ","
         << comparison.worstY << "), images in " << dir;
-    // The moved view really differs from the SPEC one (the test could not pass by ignoring the camera).
+    // The moved view really differs from the default one (the test could not pass by ignoring the camera).
     settings.cameraPosition = {0, 0, 0};
     settings.cameraTarget = {0, 0, -1};
     settings.cameraUp = {0, 1, 0};

@@ -1,6 +1,7 @@
 // The command line as a user meets it: help, usage errors, bad scene files (clear
 // message, non-zero exit, no image written), device choice and --bench output.
 #include "test_support.h"
+#include "scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 

@@ -25,7 +25,7 @@
 // the mesh (a crack), on either path.
 #include "test_support.h"
 
-#include "scene.h"
+#include "scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 

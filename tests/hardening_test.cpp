@@ -1,12 +1,12 @@
-// Hardening (issue 6): device limits named up front, environment faults (no driver, no
+// Hardening: device limits named up front, environment faults (no driver, no
 // display, a lost device), nothing lost (unwritable output fails before rendering, a
 // failed or interrupted run leaves an existing PNG as it was), Ctrl-C ends a long
 // render cleanly. Unit tests where a real fault cannot be provoked on lavapipe.
-#include "image_limits.h"
-#include "interrupt.h"
-#include "scene_gpu.h"
+#include "gpu/image_limits.h"
+#include "render/interrupt.h"
+#include "render/scene_packing.h"
 #include "test_support.h"
-#include "vk_check.h"
+#include "gpu/vk_check.h"
 
 #include <gtest/gtest.h>
 
@@ -188,7 +188,7 @@ TEST(EnvironmentFaults, ALostDeviceSaysSo) {
     // lavapipe cannot be made to lose its device; the one error path for every Vulkan
     // call is what a lost device goes through.
     try {
-        throwVulkanError(VK_ERROR_DEVICE_LOST, "vkWaitForFences(...)", "/src/host/headless.cpp", 42);
+        throwVulkanError(VK_ERROR_DEVICE_LOST, "vkWaitForFences(...)", "/src/host/render/headless.cpp", 42);
         FAIL() << "no exception";
     } catch (const VulkanError& error) {
         EXPECT_EQ(error.result, VK_ERROR_DEVICE_LOST);

@@ -1,11 +1,12 @@
 // Host pieces that need no GPU: the runtime shader compiler, the scene packer, the kernel's
 // variants (precision, specialization) and their cache keys.
-#include "context.h"
-#include "pipeline.h"
-#include "renderer.h"
-#include "scene_gpu.h"
-#include "screenshot.h"
-#include "shader_compiler.h"
+#include "gpu/context.h"
+#include "render/trace_pipeline.h"
+#include "render/renderer.h"
+#include "render/scene_packing.h"
+#include "window/screenshot.h"
+#include "gpu/shader_compiler.h"
+#include "render/kernel_sources.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A CPU benchmark peer (tools/peers) must render SPEC's model, or its timings in
+# A CPU benchmark peer (tools/peers) must render the model of docs/model.md, or its timings in
 # tools/bench compare Raytracer with something else: its image of a few classic scenes
 # must match the double-precision CPU reference as the GPU renderer's must (at least
 # 99.5% of pixels within 2/255; conformance_test explains the tolerance).

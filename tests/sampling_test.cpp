@@ -5,11 +5,12 @@
 // grid; the grid is exactly the cell centres; the seed moves jittered samples and only
 // those; and r2's sample s does not depend on n, which is what lets a progressive display
 // converge to the headless --spp N image.
-#include "context.h"
-#include "pipeline.h"
-#include "resources.h"
-#include "shader_compiler.h"
-#include "vk_check.h"
+#include "gpu/context.h"
+#include "render/trace_pipeline.h"
+#include "gpu/resources.h"
+#include "gpu/shader_compiler.h"
+#include "gpu/vk_check.h"
+#include "render/kernel_sources.h"
 
 #include <gtest/gtest.h>
 
@@ -125,7 +126,7 @@ class SampleOffsets : public testing::Test {
 
         gpu::GpuFrameParams params{};
         params.counts.w = seed;
-        submitAndWait(context_, [&](VkCommandBuffer commands) {
+        runOneTimeCommands(context_, [&](VkCommandBuffer commands) {
             vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
             vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, 1, &set, 0, nullptr);
             vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof params, &params);

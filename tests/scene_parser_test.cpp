@@ -1,7 +1,7 @@
 // The scene parser from strings: every accepted form, every error with its exact
 // message, the warnings, and the sample scenes of the classic assignment.
-#include "scene.h"
-#include "scene_text.h"
+#include "scene/scene_loader.h"
+#include "scene/scene_lexer.h"
 
 #include <gtest/gtest.h>
 
@@ -592,10 +592,10 @@ TEST(SceneNumbers, FastPathMatchesFromCharsBitForBit) {
     std::mt19937_64 random(12345);
     const auto check = [](const std::string& token) {
         double fast = 0.0, slow = 0.0;
-        const scene_text::NumberStatus fastStatus = scene_text::parseNumber(token, fast);
-        const scene_text::NumberStatus slowStatus = scene_text::parseNumberSlow(token, slow);
+        const scene_lexer::NumberStatus fastStatus = scene_lexer::parseNumber(token, fast);
+        const scene_lexer::NumberStatus slowStatus = scene_lexer::parseNumberSlow(token, slow);
         ASSERT_EQ(fastStatus, slowStatus) << token;
-        if (fastStatus == scene_text::NumberStatus::ok) {
+        if (fastStatus == scene_lexer::NumberStatus::ok) {
             ASSERT_EQ(std::bit_cast<std::uint64_t>(fast), std::bit_cast<std::uint64_t>(slow))
                 << token;
         }
@@ -703,11 +703,11 @@ TEST(SceneNumbers, FastPathMatchesFromCharsBitForBit) {
 TEST(SceneText, BinaryCheckFindsEveryByteAtEveryOffset) {
     for (int byte = 0; byte < 256; ++byte) {
         const char c = char(byte);
-        const bool text = (byte >= 0x20 && byte < 0x7F) || scene_text::isSpace(c);
+        const bool text = (byte >= 0x20 && byte < 0x7F) || scene_lexer::isSpace(c);
         for (std::size_t at = 0; at < 20; ++at) {
             std::string sample(20, 'a');
             sample[at] = c;
-            const auto reason = scene_text::binaryReason(sample);
+            const auto reason = scene_lexer::binaryReason(sample);
             std::string expected;
             if (byte == 0)
                 expected = "NUL byte at offset " + std::to_string(at);
@@ -726,7 +726,7 @@ TEST(SceneText, BinaryCheckFindsEveryByteAtEveryOffset) {
     }
     // Multi-byte characters across a word boundary are text.
     for (std::size_t at = 0; at < 12; ++at)
-        EXPECT_FALSE(scene_text::binaryReason(std::string(at, 'a') +
+        EXPECT_FALSE(scene_lexer::binaryReason(std::string(at, 'a') +
                                               "\xC3\xA8\xE2\x82\xAC\xF0\x9F\x98\x80" +
                                               std::string(9, 'b'))
                          .has_value());
@@ -793,7 +793,7 @@ void expectSameAsOnePass(std::string_view text) {
         ASSERT_EQ(outcome(text, {threads, 1}), expected) << threads << " threads";
 }
 
-// A file of several megabytes is mapped rather than read (host/scene_file.h) and
+// A file of several megabytes is mapped rather than read (host/scene/mapped_file.h) and
 // split among threads: it must load exactly as its text parses in one pass, errors and
 // their line numbers included.
 TEST(SceneLoad, LargeFileLoadsAsItsTextParses) {
@@ -831,19 +831,19 @@ TEST(SceneLoad, LargeFileLoadsAsItsTextParses) {
 TEST(SceneParallel, ChunksStartAtObjectKeywords) {
     const std::string text = mixedScene(20);
     for (unsigned threads = 1; threads <= 8; ++threads) {
-        const std::vector<std::size_t> starts = scene_text::chunkStarts(text, threads, 1);
+        const std::vector<std::size_t> starts = scene_lexer::chunkStarts(text, threads, 1);
         EXPECT_EQ(starts.size(), threads); // every share of this text holds a keyword
         EXPECT_EQ(starts.front(), 0u);
         for (std::size_t k = 1; k < starts.size(); ++k) {
             EXPECT_GT(starts[k], starts[k - 1]);
-            EXPECT_TRUE(scene_text::isSpace(text[starts[k] - 1]));
+            EXPECT_TRUE(scene_lexer::isSpace(text[starts[k] - 1]));
             const std::string_view word = std::string_view(text).substr(starts[k], 5);
             EXPECT_TRUE(word == "spher" || word == "trian" || word == "LIGHT" || word == "light")
                 << word;
         }
     }
-    EXPECT_EQ(scene_text::chunkStarts(text, 8, text.size()).size(), 1u); // too small to split
-    EXPECT_EQ(scene_text::chunkStarts(std::string(100, 'x'), 4, 1).size(), 1u); // no keyword
+    EXPECT_EQ(scene_lexer::chunkStarts(text, 8, text.size()).size(), 1u); // too small to split
+    EXPECT_EQ(scene_lexer::chunkStarts(std::string(100, 'x'), 4, 1).size(), 1u); // no keyword
 }
 
 TEST(SceneParallel, ValidSceneIsTheSameAsInOnePass) {
@@ -889,8 +889,8 @@ TEST(SceneParallel, FirstErrorInFileOrderWins) {
 TEST(SceneParallel, EveryDamagedTokenIsReportedAsInOnePass) {
     const std::string text = mixedScene(8);
     std::vector<std::pair<std::size_t, std::size_t>> tokens; // offset, length
-    for (scene_text::Tokenizer tokenizer{text};;) {
-        const scene_text::Token token = tokenizer.next();
+    for (scene_lexer::Tokenizer tokenizer{text};;) {
+        const scene_lexer::Token token = tokenizer.next();
         if (token.text.empty()) break;
         tokens.emplace_back(std::size_t(token.text.data() - text.data()), token.text.size());
     }

@@ -2,9 +2,10 @@
 // folder of them (--shader-dir) compiles to the same kernel and renders the same bytes,
 // a compile error names the folder's file and line, and the file watch the window polls
 // notices saves of a file and of a folder.
-#include "file_watch.h"
-#include "shader_compiler.h"
+#include "base/file_watch.h"
+#include "gpu/shader_compiler.h"
 #include "test_support.h"
+#include "render/kernel_sources.h"
 
 #include <gtest/gtest.h>
 

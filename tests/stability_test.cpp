@@ -22,7 +22,7 @@
 #include "test_support.h"
 
 #include "reference_range.h"
-#include "scene.h"
+#include "scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,12 @@
-// The on-disk shader and pipeline cache (host/pipeline_cache.h) as a user meets it: the
+// The on-disk shader and pipeline cache (host/gpu/pipeline_cache.h) as a user meets it: the
 // first run fills it, later runs use it, and a damaged, truncated, empty or foreign file
 // costs a note and a rebuild, never a failure or a different image. --no-cache writes
 // nothing. Every run gets its own XDG_CACHE_HOME; Mesa's own shader cache is kept in
 // one shared folder so that lavapipe does not recompile its code for every fresh home.
 #include "test_support.h"
 
-#include "cache_file.h"
-#include "pipeline_cache.h"
+#include "gpu/cache_file.h"
+#include "gpu/pipeline_cache.h"
 
 #include <gtest/gtest.h>
 

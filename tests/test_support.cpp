@@ -111,7 +111,7 @@ void writeTextFile(const std::filesystem::path& path, const std::string& text) {
 }
 
 bool hasValidationMessage(const ProcessResult& result) {
-    // The program's messenger prefixes every message it relays (host/context.cpp).
+    // The program's messenger prefixes every message it relays (host/gpu/context.cpp).
     return result.err.find("validation error: ") != std::string::npos ||
            result.err.find("validation warning: ") != std::string::npos;
 }

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "image_compare.h"
-#include "image_io.h"
+#include "base/image_io.h"
 #include "reference_renderer.h"
 
 #include <filesystem>

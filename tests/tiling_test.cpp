@@ -1,11 +1,11 @@
-// Headless frames traced in many short submissions (host/tile_scheduler.h): the regions
+// Headless frames traced in many short submissions (host/render/region_planner.h): the regions
 // cover every pixel exactly once and adapt toward the target time; any tiling gives
 // the same bytes; a long render reports progress (in place on a terminal, one summary
 // line elsewhere).
 #include "test_support.h"
 
 #include "shared.h"
-#include "tile_scheduler.h"
+#include "render/region_planner.h"
 
 #include <gtest/gtest.h>
 
@@ -22,18 +22,18 @@ namespace fs = std::filesystem;
 
 const fs::path kShowcase = fs::path(PROJECT_SCENES_DIR) / "showcase.scene";
 
-// Drives a scheduler over a whole frame, answering each region with millisecondsFor,
+// Drives a planner over a whole frame, answering each region with millisecondsFor,
 // and checks that the regions tile the image: every pixel once, whole workgroups
 // except at the right and bottom edges. Returns the regions.
 std::vector<TraceRegion>
-planFrame(TileScheduler& scheduler, std::uint32_t width, std::uint32_t height,
+planFrame(RegionPlanner& planner, std::uint32_t width, std::uint32_t height,
           const std::function<double(const TraceRegion&)>& millisecondsFor) {
     std::vector<std::uint8_t> covered(std::size_t(width) * height, 0);
     std::size_t coveredPixels = 0;
     std::vector<TraceRegion> regions;
-    beginFrame(scheduler, width, height);
+    beginFrame(planner, width, height);
     TraceRegion region;
-    while (nextRegion(scheduler, region)) {
+    while (nextRegion(planner, region)) {
         EXPECT_GT(region.width, 0u);
         EXPECT_GT(region.height, 0u);
         EXPECT_LE(region.x + region.width, width);
@@ -50,8 +50,8 @@ planFrame(TileScheduler& scheduler, std::uint32_t width, std::uint32_t height,
             for (std::uint32_t x = region.x; x < region.x + region.width && x < width; ++x)
                 coveredPixels += covered[std::size_t(y) * width + x]++ == 0;
         regions.push_back(region);
-        EXPECT_EQ(frameCovered(scheduler), coveredPixels == covered.size());
-        regionTraced(scheduler, region, millisecondsFor(region));
+        EXPECT_EQ(frameCovered(planner), coveredPixels == covered.size());
+        regionTraced(planner, region, millisecondsFor(region));
         if (regions.size() > 1000000) break;
     }
     EXPECT_TRUE(std::all_of(covered.begin(), covered.end(), [](std::uint8_t n) { return n == 1; }))
@@ -63,7 +63,7 @@ double pixelsOf(const TraceRegion& region) {
     return double(region.width) * region.height;
 }
 
-TEST(TileScheduler, RegionsCoverEveryPixelOnceWhateverTheTimes) {
+TEST(RegionPlanner, RegionsCoverEveryPixelOnceWhateverTheTimes) {
     const std::vector<std::pair<std::uint32_t, std::uint32_t>> sizes = {
         {1, 1}, {7, 5}, {9, 17}, {640, 480}, {1500, 1100}, {4000, 3}, {3, 4000}};
     const std::vector<std::function<double(const TraceRegion&)>> timings = {
@@ -75,17 +75,17 @@ TEST(TileScheduler, RegionsCoverEveryPixelOnceWhateverTheTimes) {
     for (auto [width, height] : sizes)
         for (const auto& timing : timings)
             for (std::uint32_t fixedSide : {0u, 8u, 64u, 20u}) {
-                TileScheduler scheduler = createTileScheduler(fixedSide);
-                planFrame(scheduler, width, height, timing);
+                RegionPlanner planner = createRegionPlanner(fixedSide);
+                planFrame(planner, width, height, timing);
             }
 }
 
-TEST(TileScheduler, AdaptsTowardTheTargetAndGrowsGradually) {
+TEST(RegionPlanner, AdaptsTowardTheTargetAndGrowsGradually) {
     const double pixelsPerMs = 5000.0;
-    TileScheduler scheduler = createTileScheduler(0);
+    RegionPlanner planner = createRegionPlanner(0);
     std::vector<double> budgets; // the budget each region was cut from
-    std::vector<TraceRegion> regions = planFrame(scheduler, 4096, 4096, [&](const TraceRegion& r) {
-        budgets.push_back(scheduler.budgetPixels);
+    std::vector<TraceRegion> regions = planFrame(planner, 4096, 4096, [&](const TraceRegion& r) {
+        budgets.push_back(planner.budgetPixels);
         return pixelsOf(r) / pixelsPerMs;
     });
     ASSERT_GT(regions.size(), 10u);
@@ -110,19 +110,19 @@ TEST(TileScheduler, AdaptsTowardTheTargetAndGrowsGradually) {
     EXPECT_LT(times.back(), 2.0 * kTargetSubmissionMs);
 
     // The next frame starts from what was learned.
-    beginFrame(scheduler, 4096, 4096);
+    beginFrame(planner, 4096, 4096);
     TraceRegion first;
-    ASSERT_TRUE(nextRegion(scheduler, first));
+    ASSERT_TRUE(nextRegion(planner, first));
     EXPECT_GT(pixelsOf(first), 64.0 * 64.0 * 16);
 }
 
 // A CPU device gets longer submissions (no watchdog; each submission costs lavapipe an
 // idle tail): the same adapting, toward kCpuTargetSubmissionMs, in fewer submissions.
-TEST(TileScheduler, CpuTargetAdaptsTowardItsOwnTarget) {
+TEST(RegionPlanner, CpuTargetAdaptsTowardItsOwnTarget) {
     const double pixelsPerMs = 5000.0;
     const auto timing = [&](const TraceRegion& r) { return pixelsOf(r) / pixelsPerMs; };
-    TileScheduler gpu = createTileScheduler(0);
-    TileScheduler cpu = createTileScheduler(0, kCpuTargetSubmissionMs);
+    RegionPlanner gpu = createRegionPlanner(0);
+    RegionPlanner cpu = createRegionPlanner(0, kCpuTargetSubmissionMs);
     planFrame(gpu, 4096, 4096, timing); // both learn on a first frame
     planFrame(cpu, 4096, 4096, timing);
     std::vector<TraceRegion> gpuRegions = planFrame(gpu, 4096, 4096, timing);
@@ -138,18 +138,18 @@ TEST(TileScheduler, CpuTargetAdaptsTowardItsOwnTarget) {
     EXPECT_LE(kCpuTargetSubmissionMs, 500.0) << "Ctrl-C and progress must stay responsive";
 }
 
-TEST(TileScheduler, SlowRegionsShrinkToOneWorkgroup) {
-    TileScheduler scheduler = createTileScheduler(0);
+TEST(RegionPlanner, SlowRegionsShrinkToOneWorkgroup) {
+    RegionPlanner planner = createRegionPlanner(0);
     std::vector<TraceRegion> regions =
-        planFrame(scheduler, 256, 256, [](const TraceRegion&) { return 1000.0; });
+        planFrame(planner, 256, 256, [](const TraceRegion&) { return 1000.0; });
     EXPECT_EQ(pixelsOf(regions.back()), double(WORKGROUP_SIZE_X) * WORKGROUP_SIZE_Y);
 }
 
-TEST(TileScheduler, FixedSideIsWholeWorkgroups) {
-    TileScheduler scheduler = createTileScheduler(64);
-    auto regions = planFrame(scheduler, 1500, 1100, [](const TraceRegion&) { return 1.0; });
+TEST(RegionPlanner, FixedSideIsWholeWorkgroups) {
+    RegionPlanner planner = createRegionPlanner(64);
+    auto regions = planFrame(planner, 1500, 1100, [](const TraceRegion&) { return 1.0; });
     EXPECT_EQ(regions.size(), 24u * 18u);
-    TileScheduler odd = createTileScheduler(20);
+    RegionPlanner odd = createRegionPlanner(20);
     regions = planFrame(odd, 100, 100, [](const TraceRegion&) { return 1.0; });
     EXPECT_EQ(regions[0].width, 24u);
     EXPECT_EQ(regions[0].height, 24u);
@@ -176,7 +176,7 @@ TEST(Tiling, LargeImageIsTheSameWithSmallTilesAndReportsProgress) {
     std::vector<std::string> adaptive = common, small = common;
     adaptive.insert(adaptive.end(), {"-o", (dir / "adaptive.png").string()});
     small.insert(small.end(),
-                 {"-o", (dir / "small.png").string(), "--tile-size", "64", "--validate"});
+                 {"-o", (dir / "small.png").string(), "--region-size", "64", "--validate"});
 
     ProcessResult adaptiveRun = runRaytracer(adaptive);
     ASSERT_EQ(adaptiveRun.exitCode, 0) << adaptiveRun.err;
@@ -199,7 +199,7 @@ TEST(Tiling, SamplesPerPixelAreTheSameWithSmallTiles) {
         kShowcase.string(), "--width", "200", "--height", "150", "--spp", "4", "--no-cache"};
     std::vector<std::string> adaptive = common, small = common;
     adaptive.insert(adaptive.end(), {"-o", (dir / "adaptive.png").string()});
-    small.insert(small.end(), {"-o", (dir / "small.png").string(), "--tile-size", "16"});
+    small.insert(small.end(), {"-o", (dir / "small.png").string(), "--region-size", "16"});
     ASSERT_EQ(runRaytracer(adaptive).exitCode, 0);
     ASSERT_EQ(runRaytracer(small).exitCode, 0);
     EXPECT_EQ(readBytes(dir / "adaptive.png"), readBytes(dir / "small.png"));
@@ -255,7 +255,7 @@ TEST(Tiling, ProgressIsRedrawnInPlaceOnATerminal) {
     fs::path dir = freshOutputDir("tiling/terminal");
     ProcessResult run =
         runOnTerminal({kShowcase.string(), "-o", (dir / "out.png").string(), "--width", "320",
-                       "--height", "240", "--progress", "--tile-size", "64", "--no-cache"});
+                       "--height", "240", "--progress", "--region-size", "64", "--no-cache"});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     std::size_t redraws = 0;
     for (std::size_t at = run.err.find("\rRendering 320x240: "); at != std::string::npos;

@@ -2,7 +2,7 @@
 # The progressive view under Xvfb: with --spp N the window refines to exactly the headless
 # --spp N image (tolerance 0), also from a moved camera; P writes a PNG identical to it;
 # V recreates the swapchain; a mouse drag moves the camera and C and Home reset it to the
-# SPEC camera; Q quits with status 0 and the validation layer stays silent.
+# default camera; Q quits with status 0 and the validation layer stays silent.
 #
 # usage: window_progressive_test.sh RAYTRACER SCENE OUTPUT_DIR IMAGE_DIFF
 set -euo pipefail
@@ -61,12 +61,12 @@ run_inside_xvfb() {
 
     press_key "$id" c
     if wait_for_log "$pid" "$log" "Refined: $SPP samples" 2 60 && window_matches "$id" spec.png spec-window; then
-        pass "C: reset to the SPEC camera, equals the default headless render"
+        pass "C: reset to the default camera, equals the default headless render"
     else
         fail "C: the window differs from spec.png (see spec-window.png)"
     fi
 
-    # Each camera move below must change the view; each reset must restore the SPEC view
+    # Each camera move below must change the view; each reset must restore the default view
     # exactly. A move may finish several refinements, so the log is counted afresh each time.
     local x=$((WIDTH / 2)) y=$((HEIGHT / 2))
     moved_view() { # LABEL PREFIX: waits for a new refinement, expects a view unlike spec.png
@@ -81,7 +81,7 @@ run_inside_xvfb() {
         refined=$(grep -cF "Refined: $SPP samples" "$log")
         press_key "$id" "$1"
         if wait_for_log "$pid" "$log" "Refined: $SPP samples" $((refined + 1)) 60 && window_matches "$id" spec.png "$2"; then
-            pass "$1: back to the SPEC camera exactly"
+            pass "$1: back to the default camera exactly"
         else
             fail "$1: the window differs from spec.png (see $2.png)"
         fi

@@ -112,7 +112,7 @@ def normalize(v):
 
 
 def pixel_ray(i, j, width, height, fov):
-    """SPEC's camera: the unnormalised direction (x, y, -1) through pixel (i, j)'s point (i, j)
+    """the default camera: the unnormalised direction (x, y, -1) through pixel (i, j)'s point (i, j)
     (pass i + 0.5 for the centre)."""
     ty = math.tan(math.radians(fov) / 2)
     tx = width / height * ty
@@ -122,7 +122,7 @@ def pixel_ray(i, j, width, height, fov):
 # ------------------------------------------------------------------- writer ---
 
 class Scene:
-    """Objects in SPEC's format; lengths multiplied by `scale` as they are written."""
+    """Objects in the scene format (docs/model.md); lengths multiplied by `scale` as they are written."""
 
     def __init__(self, ambient, scale=1.0):
         self.ambient = ambient
@@ -334,7 +334,7 @@ def degenerate(scale=1.0, width=WIDTH, height=HEIGHT, fov=60.0):
     # triangles lie in the plane z = -4), so the geometric fallback where the interpolated
     # normal is exactly zero shades like the points around it: a renderer that produces NaN
     # there, or that normalises each vertex normal before interpolating (NaN over the whole
-    # triangle), is caught, and one that follows the SPEC cannot be told apart from the
+    # triangle), is caught, and one that follows the model cannot be told apart from the
     # reference by an answer at a single point that has no neighbours to agree with.
     # One zero-length vertex normal (and one of length 2), that vertex on the ray of pixel
     # (40, 80); per-vertex colours.

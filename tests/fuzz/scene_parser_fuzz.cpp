@@ -1,4 +1,4 @@
-// libFuzzer target for the scene parser (host/scene.h): any input must either parse
+// libFuzzer target for the scene parser (host/scene/scene.h): any input must either parse
 // or be rejected with a SceneError. Anything else (another exception, a crash, a
 // sanitizer report, a leak, a hang, unbounded memory) is a bug. Also compiled into
 // fuzz_replay (tests/fuzz/fuzz_replay.cpp), which replays the seeds and regressions
@@ -9,7 +9,7 @@
 // as small as one byte among a few threads, and the two outcomes must be the same in
 // every respect: success or failure, the error's text, file, line and message, the
 // warnings, and every value bit for bit. A difference prints both outcomes and aborts.
-#include "scene.h"
+#include "scene/scene_loader.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,4 +1,4 @@
-// brute_force_peer: SPEC's model on the CPU with no acceleration structure, every ray
+// brute_force_peer: the model of docs/model.md on the CPU with no acceleration structure, every ray
 // against every primitive, in float over 2 threads. On scenes of a handful of objects
 // nothing beats it; tools/bench runs it beside Raytracer and embree_peer.
 //

@@ -1,4 +1,4 @@
-// SPEC's model on the CPU in float, shared by every peer: surface data at a hit, Phong
+// the model of docs/model.md on the CPU in float, shared by every peer: surface data at a hit, Phong
 // with hard shadows, the reflection loop. It mirrors the GPU kernel (shaders/shade.glsl,
 // trace.comp) step for step; only the intersector differs between peers, so a benchmark
 // compares intersectors and nothing else.
@@ -123,7 +123,7 @@ glm::vec3 shadePhong(const PeerScene& scene, Worker& worker, const PeerSurface& 
     return colour;
 }
 
-// SPEC's recursion colour = (1 - ks) local + ks colour(reflected) (local alone when
+// The model's recursion colour = (1 - ks) local + ks colour(reflected) (local alone when
 // ks == 0 or at depth), unrolled into a loop carrying the product of the ks (throughput).
 template <typename Worker>
 glm::vec3 traceRay(const PeerScene& scene, Worker& worker, PeerRay ray, int depth,

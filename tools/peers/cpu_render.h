@@ -1,9 +1,9 @@
-// A whole image with the shared model (cpu_model.h) on N std::threads: SPEC's camera,
+// A whole image with the shared model (cpu_model.h) on N std::threads: the default camera,
 // clamped samples averaged, bytes as floor(c * 255 + 0.5).
 #pragma once
 
 #include "cpu_model.h"
-#include "image_io.h"
+#include "base/image_io.h"
 
 #include <glm/glm.hpp>
 
@@ -26,7 +26,7 @@ struct PeerRenderSettings {
 };
 
 // Sample offsets inside a pixel: spp cells of the most nearly square grid, as the
-// reference does (1 gives the centre, which is all SPEC fixes).
+// reference does (1 gives the centre, which is all the model fixes).
 inline std::vector<glm::vec2> sampleOffsets(int spp) {
     int rows = int(std::sqrt(double(spp)));
     while (spp % rows != 0)
@@ -60,7 +60,7 @@ std::uint64_t renderImage(const PeerScene& scene, const Intersector& intersector
     image.height = settings.height;
     image.rgba.resize(std::size_t(settings.width) * std::size_t(settings.height) * 4);
     const std::vector<glm::vec2> offsets = sampleOffsets(settings.spp);
-    // SPEC: x = (2 (i + u) / W - 1) aspect tan(fov/2), y = (1 - 2 (j + v) / H) tan(fov/2).
+    // docs/model.md: x = (2 (i + u) / W - 1) aspect tan(fov/2), y = (1 - 2 (j + v) / H) tan(fov/2).
     const double tanHalfY = std::tan(double(settings.fovDegrees) * std::numbers::pi / 360.0);
     const float tanY = float(tanHalfY);
     const float tanX = float(tanHalfY * settings.width / settings.height);

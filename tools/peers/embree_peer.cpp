@@ -1,12 +1,12 @@
-// embree_peer: SPEC's model on the CPU with Intel Embree 3 as the intersector, the peer
+// embree_peer: the model of docs/model.md on the CPU with Intel Embree 3 as the intersector, the peer
 // a user with a CPU would pick for scenes of many triangles. tools/bench runs it beside
 // Raytracer and brute_force_peer.
 //
 // Geometry: one RTC_GEOMETRY_TYPE_TRIANGLE mesh over a shared vertex buffer, and the
 // spheres as RTC_GEOMETRY_TYPE_SPHERE_POINT, which Embree intersects as exact spheres
 // (a ray/sphere quadratic, not a tessellation). The scene is built with
-// RTC_SCENE_FLAG_ROBUST: watertight triangle tests and conservative traversal, as SPEC
-// asks of shared edges (it costs 10-20% here). Primary rays go through rtcIntersect8 in
+// RTC_SCENE_FLAG_ROBUST: watertight triangle tests and conservative traversal, as the
+// model asks of shared edges (it costs 10-20% here). Primary rays go through rtcIntersect8 in
 // packets of 8 neighbouring pixels (10-25% faster on toy and table than one at a
 // time; measured), the incoherent shadow and reflection rays one at a time through
 // rtcIntersect1 / rtcOccluded1. 2 std::threads, each with its own RTCIntersectContext;

@@ -1,6 +1,7 @@
 #include "peer_driver.h"
 
-#include "bench_json.h"
+#include "base/bench_json.h"
+#include "scene/scene_loader.h"
 
 #include <algorithm>
 #include <charconv>
@@ -23,7 +24,7 @@ constexpr int warmUpFrames = 1;
 const char* const usageText =
     "usage: %s SCENE [-o OUT.png] [--bench N] [--width W] [--height H] [--depth D]\n"
     "          [--spp N] [--threads T]\n"
-    "Renders SCENE with SPEC.md's model on the CPU (a benchmark peer of Raytracer).\n"
+    "Renders SCENE with the model of docs/model.md on the CPU (a benchmark peer of Raytracer).\n"
     "  -o OUT.png           write the image (with --bench: the last timed frame)\n"
     "  --bench N            render N timed frames after a warm-up, print one JSON line\n"
     "  --width W --height H image size, default 640 480\n"
@@ -98,7 +99,7 @@ struct Timings {
     std::uint64_t raysPerFrame = 0;
 };
 
-// SPEC's --bench keys, with gpu_ms_median and gpu_bytes null (no GPU here), plus
+// Raytracer's --bench keys, with gpu_ms_median and gpu_bytes null (no GPU here), plus
 // parse_ms, prepare_ms, build_ms, memory_bytes, threads and the count of every ray traced.
 std::string benchJson(const PeerOptions& o, const PeerScene& scene, const PeerRenderer& peer,
                       const Timings& t) {

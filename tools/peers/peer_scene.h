@@ -1,8 +1,8 @@
-// The scene as the CPU peers use it: SPEC's scene in float, triangles indexing one
+// The scene as the CPU peers use it: the file's scene in float, triangles indexing one
 // shared vertex buffer (what Embree wants), shading data per triangle corner.
 #pragma once
 
-#include "scene.h"
+#include "scene/scene.h"
 
 #include <glm/glm.hpp>
 

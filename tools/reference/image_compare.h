@@ -2,7 +2,7 @@
 // image, for the tests and the image_diff tool. Alpha is ignored (RGB only).
 #pragma once
 
-#include "image_io.h"
+#include "base/image_io.h"
 
 #include <string>
 

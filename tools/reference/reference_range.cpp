@@ -9,7 +9,7 @@
 
 namespace {
 
-// SPEC's camera through the point (px, py) of the image, in pixels from the top left.
+// the default camera through the point (px, py) of the image, in pixels from the top left.
 glm::dvec3 eyeDirection(const ReferenceSettings& settings, double px, double py) {
     const double tanHalfY = std::tan(settings.fovDegrees * (std::numbers::pi / 360.0));
     const double tanHalfX = double(settings.width) / settings.height * tanHalfY;

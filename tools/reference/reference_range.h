@@ -11,9 +11,9 @@
 // never excused: the wrong value lies outside whatever the nearby rays see.
 #pragma once
 
-#include "image_io.h"
+#include "base/image_io.h"
 #include "reference_renderer.h"
-#include "scene.h"
+#include "scene/scene.h"
 
 #include <cstdint>
 #include <vector>

@@ -1,6 +1,7 @@
 // reference_render SCENE -o out.png [options]: the CPU reference renderer as a tool.
 #include "reference_renderer.h"
 #include "tool_arguments.h"
+#include "scene/scene_loader.h"
 
 #include <charconv>
 #include <chrono>
@@ -18,7 +19,7 @@ const char* const usage =
     "                        [--spp N] [--background R,G,B] [--fov DEG] [--truncate]\n"
     "                        [--threads N] [--camera-pos X,Y,Z] [--camera-target X,Y,Z]\n"
     "                        [--camera-up X,Y,Z]\n"
-    "Renders SCENE with the double-precision CPU reference (SPEC.md's model).\n"
+    "Renders SCENE with the double-precision CPU reference (the model of docs/model.md).\n"
     "  --width W --height H   image size, default 640 480\n"
     "  --depth D              reflection bounces, default 5\n"
     "  --spp N                samples per pixel on a regular grid, default 1\n"

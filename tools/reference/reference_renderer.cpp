@@ -1,4 +1,4 @@
-// The CPU reference renderer: SPEC.md's model, literally, in double precision.
+// The CPU reference renderer: the model of docs/model.md, literally, in double precision.
 //
 // It exists to check the GPU renderer, so it shares none of the GPU shader's
 // numerical methods; a mistake in one method then shows up as a difference
@@ -17,7 +17,7 @@
 //                                                           triangle is skipped (a plane can't be
 //                                                           re-hit) and for its own sphere the
 //                                                           root at t = 0 is removed analytically
-//   reflection           iterative loop                     the SPEC recursion, folded from the
+//   reflection           iterative loop                     the model's recursion, folded from the
 //                                                           innermost bounce outwards
 //
 // Accuracy. Spheres: the geometric method's d^2 = |L|^2 - tca^2 cancels when the
@@ -203,7 +203,7 @@ SurfacePoint surfaceAt(const World& world, const Ray& ray, const Hit& hit) {
     return p;
 }
 
-// Phong with hard shadows, exactly as SPEC's "Shading" section.
+// Phong with hard shadows, exactly as docs/model.md's "Shading".
 dvec3 shadeLocal(const World& world, const SurfacePoint& p, dvec3 view, int id) {
     const Material& m = p.material;
     dvec3 local = world.scene.ambient; // k_a = 1, once per point
@@ -230,7 +230,7 @@ struct Bounce {
     dvec3 ks;
 };
 
-// colour(ray, bounce) of SPEC's "Reflection": the path is followed forwards, then
+// colour(ray, bounce) of docs/model.md's "Reflection": the path is followed forwards, then
 // (1 - ks) * local + ks * colour(next) is evaluated from the innermost bounce out,
 // the same arithmetic as the recursion without a stack frame per bounce.
 dvec3 traceRay(const World& world, const ReferenceSettings& settings, Ray ray,
@@ -262,7 +262,7 @@ dvec3 traceRay(const World& world, const ReferenceSettings& settings, Ray ray,
 
 struct Camera {
     double width, height, tanHalfX, tanHalfY;
-    // World-space axes: camera-space x, y and the view direction (camera -z). The SPEC
+    // World-space axes: camera-space x, y and the view direction (camera -z). The default
     // camera's are the unit axes, which keeps its rays exactly (x, y, -1).
     dvec3 right{1, 0, 0}, up{0, 1, 0}, forward{0, 0, -1};
     dvec3 eye{0.0};
@@ -270,7 +270,7 @@ struct Camera {
 };
 
 // spp samples on the most square rows x cols grid with rows * cols == spp, at the
-// cell centres: n*n gives a regular grid, 1 the pixel centre as SPEC requires.
+// cell centres: n*n gives a regular grid, 1 the pixel centre as the model requires.
 Camera makeCamera(const ReferenceSettings& settings) {
     if (settings.width <= 0 || settings.height <= 0)
         throw std::invalid_argument("image size must be positive, got " +
@@ -303,7 +303,7 @@ Camera makeCamera(const ReferenceSettings& settings) {
     return camera;
 }
 
-// SPEC's camera: x = (2 (i + u) / W - 1) * aspect * tan(fov/2),
+// the default camera: x = (2 (i + u) / W - 1) * aspect * tan(fov/2),
 // y = (1 - 2 (j + v) / H) * tan(fov/2), direction normalize(x, y, -1) in camera space,
 // turned into the world by the camera's axes.
 dvec3 eyeDirection(const Camera& camera, int i, int j, glm::dvec2 sample) {

@@ -1,10 +1,10 @@
-// The independent CPU reference: SPEC.md's model in double precision, with its own
+// The independent CPU reference: the model of docs/model.md in double precision, with its own
 // intersection methods (see reference_renderer.cpp). Slow and simple on purpose;
 // the tests compare the GPU renderer against it.
 #pragma once
 
-#include "image_io.h"
-#include "scene.h"
+#include "base/image_io.h"
+#include "scene/scene.h"
 
 #include <glm/glm.hpp>
 
@@ -13,7 +13,7 @@ struct ReferenceSettings {
     int depth = 5; // reflection bounces after the primary hit
     int spp = 1;   // 1: pixel centre; n*n: regular grid; else the most square grid of n
     double fovDegrees = 60;
-    // The eye and where it looks; the defaults are the SPEC camera (origin, down -z).
+    // The eye and where it looks; the defaults are the default camera (origin, down -z).
     glm::dvec3 cameraPosition{0.0};
     glm::dvec3 cameraTarget{0.0, 0.0, -1.0};
     glm::dvec3 cameraUp{0.0, 1.0, 0.0};

@@ -3,6 +3,7 @@
 // tools/stability and tools/speed_accuracy; the stability test calls the library.
 #include "reference_range.h"
 #include "tool_arguments.h"
+#include "scene/scene_loader.h"
 
 #include <charconv>
 #include <cstdio>

@@ -1,0 +1,226 @@
+#include "cli/options.h"
+
+#include "shared.h"
+
+#include <charconv>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+namespace {
+
+std::uint32_t parseCount(const std::string& flag, const std::string& text, std::uint32_t low,
+                         std::uint32_t high) {
+    std::uint32_t value = 0;
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || value < low || value > high)
+        throw UsageError(flag + " expects a whole number from " + std::to_string(low) + " to " +
+                         std::to_string(high) + ", got '" + text + "'");
+    return value;
+}
+
+double parseReal(const std::string& flag, const std::string& text) {
+    double value = 0;
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+        throw UsageError(flag + " expects a number, got '" + text + "'");
+    return value;
+}
+
+glm::dvec3 parseColor(const std::string& flag, const std::string& text) {
+    std::vector<double> channels;
+    std::size_t start = 0;
+    while (true) {
+        std::size_t comma = text.find(',', start);
+        channels.push_back(parseReal(flag, text.substr(start, comma - start)));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    if (channels.size() != 3 || channels[0] < 0 || channels[1] < 0 || channels[2] < 0)
+        throw UsageError(flag + " expects three non-negative numbers R,G,B, got '" + text + "'");
+    return {channels[0], channels[1], channels[2]};
+}
+
+// Three numbers X,Y,Z of any sign (a point or a direction).
+glm::dvec3 parseVector(const std::string& flag, const std::string& text) {
+    std::vector<double> values;
+    std::size_t start = 0;
+    while (true) {
+        std::size_t comma = text.find(',', start);
+        values.push_back(parseReal(flag, text.substr(start, comma - start)));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    if (values.size() != 3) throw UsageError(flag + " expects three numbers X,Y,Z, got '" + text + "'");
+    return {values[0], values[1], values[2]};
+}
+
+// One of names' values by its name; the message lists them ("grid, stratified or r2").
+template <typename T>
+T parseChoice(const std::string& flag, const std::string& text, const ChoiceNames<T>& names) {
+    std::string expected;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (names[i].first == text) return names[i].second;
+        expected += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + std::string(names[i].first);
+    }
+    throw UsageError(flag + " expects " + expected + ", got '" + text + "'");
+}
+
+// Parses one of the kernel's method and precision flags into kernel; false if arg is none.
+bool parseKernelOption(const std::string& arg, const std::function<const std::string&()>& value,
+                       KernelChoices& kernel) {
+    if (arg == "--sampler") kernel.sampler = parseChoice(arg, value(), samplerNames());
+    else if (arg == "--seed") kernel.seed = parseCount(arg, value(), 0, 4294967295u);
+    else if (arg == "--precision") kernel.precision = parseChoice(arg, value(), precisionNames());
+    else if (arg == "--sphere-test") kernel.sphereTest = parseChoice(arg, value(), sphereTestNames());
+    else if (arg == "--triangle-test") kernel.triangleTest = parseChoice(arg, value(), triangleTestNames());
+    else if (arg == "--offset") kernel.offset = parseChoice(arg, value(), rayOffsetNames());
+    else return false;
+    return true;
+}
+
+} // namespace
+
+std::string usageText() {
+    return "Usage: Raytracer SCENE [options]\n"
+           "Renders SCENE in a window (headless to a PNG when there is no display).\n"
+           "\n"
+           "  -o, --output FILE     render headless and write a PNG\n"
+           "  --width W             image width in pixels (default 640)\n"
+           "  --height H            image height in pixels (default 480)\n"
+           "  --spp N               samples per pixel (default 1: the pixel centre)\n"
+           "  --sampler grid|stratified|r2  sample positions for --spp > 1 (default r2: low\n"
+           "                        discrepancy, and sample s does not depend on N)\n"
+           "  --seed N              varies the stratified jitter and the r2 rotation (default 0)\n"
+           "  --precision fp32|fp64  geometry arithmetic in float or double (default fp32;\n"
+           "                        fp64 needs a device with shaderFloat64)\n"
+           "  --sphere-test naive|stable  ray/sphere test: textbook quadratic, or Ray\n"
+           "                        Tracing Gems ch. 7 (default stable)\n"
+           "  --triangle-test mt|watertight  ray/triangle test: Moller-Trumbore, or Woop,\n"
+           "                        Benthin and Wald 2013 (default watertight)\n"
+           "  --offset fixed|scaled  secondary-ray origins: 1e-4 along the normal, or\n"
+           "                        Waechter-Binder scale-relative (default scaled)\n"
+           "  --depth D             reflection bounces after the primary hit, 0 to " +
+           std::to_string(MAX_DEPTH) +
+           " (default 5)\n"
+           "  --background R,G,B    colour of rays that hit nothing (default 1,1,1)\n"
+           "  --fov DEG             vertical field of view in degrees (default 60)\n"
+           "  --camera-pos X,Y,Z    eye position (default 0,0,0, the default camera)\n"
+           "  --camera-target X,Y,Z point looked at (default 0,0,-1 from the eye: down -z)\n"
+           "  --camera-up X,Y,Z     up direction (default 0,1,0)\n"
+           "  --bench N             render N frames headless after a warm-up, print JSON timings\n"
+           "  --device NAME|INDEX   use this Vulkan device (default: a real GPU before a CPU one)\n"
+           "  --accel auto|bvh|none  bounding volume hierarchy, or test every primitive (default\n"
+           "                        auto: the hierarchy from " + std::to_string(kBvhAutoThreshold) + " primitives up)\n"
+           "  --validate            enable the Khronos validation layer; any message fails the run\n"
+           "  --no-cache            neither read nor write the shader cache ($XDG_CACHE_HOME/raytracer)\n"
+           "  --progress            report progress on stderr even for a render under a second\n"
+           "  --window              show a window or fail; never fall back to a headless PNG\n"
+           "  --shader-dir DIR      compile the kernel from DIR's sources (trace.comp and its\n"
+           "                        includes); the window recompiles when one is saved\n"
+           "  --dump-shaders DIR    write the built-in shader sources to DIR and exit\n"
+           "  --bench-window N      window: time N progressive frames, print frames per second\n"
+           "  -h, --help            show this help\n"
+           "\n"
+           "The window refines progressively, one or more samples per pixel per frame, up to\n"
+           "--spp N if given (then it shows exactly the headless --spp N image), else 1024.\n"
+           "Saving the scene file (or a --shader-dir source) re-renders it.\n"
+           "Window keys: Esc or Q quits; R reloads scene and shaders; P writes a screenshot\n"
+           "PNG (once refinement is done); V toggles vsync; C or Home resets the camera.\n"
+           "Camera: drag with the left button to orbit, wheel to dolly, drag with the right\n"
+           "button to look around; W/A/S/D move, Space/Left Shift go up/down.\n";
+}
+
+Options parseOptions(int argc, const char* const* argv) {
+    Options options;
+    std::vector<std::string> args(argv + 1, argv + argc);
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) throw UsageError(arg + " expects a value");
+            return args[++i];
+        };
+        if (arg == "-h" || arg == "--help") {
+            options.showHelp = true;
+        } else if (arg == "-o" || arg == "--output") {
+            options.outputPath = value();
+            if (options.outputPath.empty()) throw UsageError(arg + " expects a file name");
+        } else if (arg == "--width") {
+            options.width = parseCount(arg, value(), 1, 16384);
+        } else if (arg == "--height") {
+            options.height = parseCount(arg, value(), 1, 16384);
+        } else if (arg == "--spp") {
+            options.samplesPerPixel = parseCount(arg, value(), 1, 65536);
+            options.samplesGiven = true;
+        } else if (arg == "--depth") {
+            options.depth = parseCount(arg, value(), 0, MAX_DEPTH);
+        } else if (arg == "--background") {
+            options.background = parseColor(arg, value());
+        } else if (arg == "--fov") {
+            options.fovDegrees = parseReal(arg, value());
+            if (!(options.fovDegrees > 0.0 && options.fovDegrees < 180.0))
+                throw UsageError("--fov expects degrees strictly between 0 and 180");
+        } else if (arg == "--camera-pos") {
+            options.camera.position = parseVector(arg, value());
+        } else if (arg == "--camera-target") {
+            options.camera.target = parseVector(arg, value());
+            options.cameraTargetGiven = true;
+        } else if (arg == "--camera-up") {
+            options.camera.up = parseVector(arg, value());
+        } else if (arg == "--shader-dir") {
+            options.shaderDirectory = value();
+            std::error_code error;
+            if (!std::filesystem::is_regular_file(options.shaderDirectory / "trace.comp", error))
+                throw UsageError("--shader-dir expects a folder holding trace.comp (see --dump-shaders), got '" +
+                                 options.shaderDirectory.string() + "'");
+        } else if (arg == "--dump-shaders") {
+            options.dumpShadersTo = value();
+            if (options.dumpShadersTo.empty()) throw UsageError("--dump-shaders expects a folder");
+        } else if (arg == "--bench-window") {
+            options.benchWindowFrames = parseCount(arg, value(), 1, 100000);
+        } else if (arg == "--bench") {
+            options.benchFrames = parseCount(arg, value(), 1, 100000);
+        } else if (arg == "--device") {
+            options.device = value();
+        } else if (arg == "--accel") {
+            const std::string& mode = value();
+            if (mode == "auto") options.acceleration = Acceleration::Auto;
+            else if (mode == "bvh") options.acceleration = Acceleration::Bvh;
+            else if (mode == "none") options.acceleration = Acceleration::None;
+            else throw UsageError("--accel expects auto, bvh or none, got '" + mode + "'");
+        } else if (arg == "--validate") {
+            options.validate = true;
+        } else if (arg == "--no-cache") {
+            options.useCache = false;
+        } else if (arg == "--region-size") {
+            options.regionSide = parseCount(arg, value(), 1, 16384);
+        } else if (arg == "--progress") {
+            options.progress = true;
+        } else if (arg == "--window") {
+            options.forceWindow = true;
+        } else if (arg == "--redraw-continuously") {
+            options.redrawContinuously = true;
+        } else if (arg == "--general-kernel") {
+            options.generalKernel = true;
+        } else if (parseKernelOption(arg, value, options.kernel)) {
+        } else if (arg.size() > 1 && arg[0] == '-') {
+            throw UsageError("unknown option '" + arg + "' (see --help)");
+        } else if (options.scenePath.empty()) {
+            options.scenePath = arg;
+        } else {
+            throw UsageError("more than one scene file given: '" + options.scenePath.string() +
+                             "' and '" + arg + "'");
+        }
+    }
+    // A target given without a position looks from the origin; a position alone keeps
+    // looking down -z from there.
+    if (!options.cameraTargetGiven) options.camera.target = options.camera.position + glm::dvec3(0.0, 0.0, -1.0);
+    if (std::string problem = cameraPoseProblem(options.camera); !problem.empty()) throw UsageError(problem);
+    if (options.scenePath.empty() && !options.showHelp && options.dumpShadersTo.empty())
+        throw UsageError("no scene file given (see --help)");
+    if (options.forceWindow && (!options.outputPath.empty() || options.benchFrames > 0))
+        throw UsageError("--window cannot be combined with -o or --bench, which render headless");
+    if (options.benchWindowFrames > 0 && (!options.outputPath.empty() || options.benchFrames > 0))
+        throw UsageError("--bench-window cannot be combined with -o or --bench, which render headless");
+    return options;
+}

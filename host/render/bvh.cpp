@@ -1,0 +1,374 @@
+// Binned SAH build (Wald, "On fast Construction of SAH-based Bounding Volume
+// Hierarchies", 2007): at each node the primitives' centroids are sorted into kBins
+// equal bins along the longest axis of their bounds, and the split between bins i and i+1
+// that minimises the surface-area cost
+//     Ct * A + A_left * N_left + A_right * N_right      (A: half the box surface area)
+// is taken, unless a leaf (cost N * A) is no dearer and small enough. Primitive ids are
+// partitioned in place in one array. An interior node is written depth first straight into
+// the output array when it is reached, and gets its children's references (box, node index
+// or leaf) once they are built, so the left child of a node, if interior, is the next node;
+// a leaf is only a reference in its parent (shared.h). The two top levels build their
+// subtrees on separate threads, each into its own array, spliced afterwards.
+//
+// Depth: traversal keeps at most one stack entry per level, so no leaf may be deeper
+// than settings.maxDepth. A node whose SAH split could leave a child deeper than median
+// splits from there would reach is split at the centroid median instead, which halves
+// the count at each level; all-equal centroids (identical primitives) are split by
+// position in the array. The depth limit therefore holds for any input.
+#include "render/bvh.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <future>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace {
+
+constexpr int kBins = 16;
+// Subtrees at least this big, at depths below kParallelDepth, go to a second thread:
+// depth 0 and 1 give up to four concurrent subtrees, enough to balance uneven splits.
+constexpr std::uint32_t kParallelMinimum = 16384;
+constexpr std::uint32_t kParallelDepth = 2;
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+struct Box {
+    glm::vec3 lo{kInfinity};
+    glm::vec3 hi{-kInfinity};
+    void grow(const Box& other) {
+        lo = glm::min(lo, other.lo);
+        hi = glm::max(hi, other.hi);
+    }
+    void grow(const glm::vec3& point) {
+        lo = glm::min(lo, point);
+        hi = glm::max(hi, point);
+    }
+    // Half the surface area; 0 for an empty box.
+    float halfArea() const {
+        glm::vec3 e = glm::max(hi - lo, glm::vec3(0.0f));
+        return e.x * e.y + e.y * e.z + e.z * e.x;
+    }
+};
+
+// A range of primitives with its box and the box of its centroids.
+struct Range {
+    std::uint32_t begin = 0, end = 0;
+    Box bounds, centroids;
+    std::uint32_t size() const { return end - begin; }
+};
+
+BvhChild interiorChild(const Box& box, std::uint32_t node) {
+    return {box.lo, box.hi, false, node, 0, false};
+}
+
+// first is an index into the builder's order until buildBvh renumbers it to a slot.
+BvhChild leafChild(const Box& box, std::uint32_t first, std::uint32_t count, bool spheres) {
+    return {box.lo, box.hi, true, first, count, spheres};
+}
+
+// A built subtree: its reference, as its parent stores it, and the depth of its deepest leaf.
+struct Subtree {
+    BvhChild child;
+    std::uint32_t depth = 0;
+};
+
+class Builder {
+  public:
+    Builder(const PrimitiveBounds& input, const BvhSettings& settings)
+        : boxes_(input.boxes.data()), sphereCount_(input.sphereCount), settings_(settings),
+          centroids_(input.size() * 3) {
+        order.resize(input.size());
+        for (std::size_t id = 0; id < order.size(); ++id) {
+            order[id] = std::uint32_t(id);
+            for (std::size_t axis = 0; axis < 3; ++axis)
+                centroids_[3 * id + axis] =
+                    0.5f * (boxes_[6 * id + axis] + boxes_[6 * id + 3 + axis]);
+        }
+    }
+
+    Range rangeOf(std::uint32_t begin, std::uint32_t end) const {
+        Range range{begin, end, {}, {}};
+        for (std::uint32_t i = begin; i < end; ++i) {
+            range.bounds.grow(box(order[i]));
+            range.centroids.grow(centroid(order[i]));
+        }
+        return range;
+    }
+
+    // Levels below a node of n primitives that median splits need in the worst case:
+    // ceil(log2(ceil(n / maxLeafSize))), plus one to split a last leaf by kind.
+    std::uint32_t levelsNeeded(std::uint32_t n) const {
+        std::uint32_t leaves = (n + settings_.maxLeafSize - 1) / settings_.maxLeafSize;
+        return std::uint32_t(std::bit_width(std::max(leaves, 1u) - 1)) + 1;
+    }
+
+    // Writes the interior nodes of the subtree over range depth first to out.
+    Subtree build(const Range& range, std::uint32_t depth, std::vector<gpu::GpuBvhNode>& out) {
+        const std::uint32_t n = range.size();
+        if (n == 1) return makeLeaf(range, depth, out);
+
+        const int axis = longestAxis(range.centroids);
+        const float extent = range.centroids.hi[axis] - range.centroids.lo[axis];
+        Range left, right;
+        bool split = extent > 0.0f && sahSplit(range, axis, left, right);
+        bool withinDepth = split && depth + 1 + levelsNeeded(std::max(left.size(), right.size())) <=
+                                        settings_.maxDepth;
+        if (n <= settings_.maxLeafSize && (!split || !withinDepth))
+            return makeLeaf(range, depth, out);
+        if (!withinDepth) medianSplit(range, axis, extent > 0.0f, left, right);
+
+        const std::uint32_t self = std::uint32_t(out.size());
+        out.emplace_back();
+        Subtree leftTree, rightTree;
+        if (depth < kParallelDepth && n >= kParallelMinimum && settings_.threads > 1) {
+            std::vector<gpu::GpuBvhNode> leftNodes, rightNodes;
+            auto leftTask =
+                std::async(std::launch::async, [&] { return build(left, depth + 1, leftNodes); });
+            rightTree = build(right, depth + 1, rightNodes);
+            leftTree = leftTask.get();
+            splice(leftNodes, leftTree.child, out);
+            splice(rightNodes, rightTree.child, out);
+        } else {
+            leftTree = build(left, depth + 1, out);
+            rightTree = build(right, depth + 1, out);
+        }
+        setBvhChild(out[self], BvhSide::Left, leftTree.child);
+        setBvhChild(out[self], BvhSide::Right, rightTree.child);
+        return {interiorChild(range.bounds, self), std::max(leftTree.depth, rightTree.depth)};
+    }
+
+    std::vector<std::uint32_t> order; // primitive ids; each leaf owns a consecutive range
+
+  private:
+    Box box(std::uint32_t id) const {
+        const float* b = boxes_ + 6 * std::size_t(id);
+        return {{b[0], b[1], b[2]}, {b[3], b[4], b[5]}};
+    }
+    glm::vec3 centroid(std::uint32_t id) const {
+        const float* c = centroids_.data() + 3 * std::size_t(id);
+        return {c[0], c[1], c[2]};
+    }
+    float centroid(std::uint32_t id, int axis) const {
+        return centroids_[3 * std::size_t(id) + axis];
+    }
+
+    static int longestAxis(const Box& box) {
+        glm::vec3 e = box.hi - box.lo;
+        return e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
+    }
+
+    // The binned SAH split of range along axis, if it is cheaper than a leaf or the range
+    // is too big for one. Partitions the range and fills left and right.
+    bool sahSplit(const Range& range, int axis, Range& left, Range& right) {
+        struct Bin {
+            Box bounds, centroids;
+            std::uint32_t count = 0;
+        };
+        const float lo = range.centroids.lo[axis];
+        const float scale = float(kBins) / (range.centroids.hi[axis] - lo);
+        if (!std::isfinite(scale)) return false; // a subnormal extent: nothing to bin
+        auto binOf = [&](std::uint32_t id) {
+            return std::min(kBins - 1, int((centroid(id, axis) - lo) * scale));
+        };
+        std::array<Bin, kBins> bins;
+        for (std::uint32_t i = range.begin; i < range.end; ++i) {
+            std::uint32_t id = order[i];
+            Bin& bin = bins[binOf(id)];
+            bin.bounds.grow(box(id));
+            bin.centroids.grow(centroid(id));
+            ++bin.count;
+        }
+        // Sweep from the right for the right side's cost of each plane, then from the left.
+        std::array<float, kBins - 1> rightCost{};
+        Box accumulated;
+        std::uint32_t count = 0;
+        for (int i = kBins - 1; i > 0; --i) {
+            accumulated.grow(bins[i].bounds);
+            count += bins[i].count;
+            rightCost[i - 1] = count ? accumulated.halfArea() * float(count) : kInfinity;
+        }
+        int best = -1;
+        float bestCost = kInfinity;
+        accumulated = Box{};
+        count = 0;
+        for (int i = 0; i < kBins - 1; ++i) {
+            accumulated.grow(bins[i].bounds);
+            count += bins[i].count;
+            if (count == 0) continue;
+            float cost = accumulated.halfArea() * float(count) + rightCost[i];
+            if (cost < bestCost) {
+                bestCost = cost;
+                best = i;
+            }
+        }
+        const float area = range.bounds.halfArea();
+        const float leafCost = area * float(range.size());
+        if (best < 0) return false;
+        if (range.size() <= settings_.maxLeafSize &&
+            leafCost <= settings_.traversalCost * area + bestCost)
+            return false;
+
+        auto first = order.begin() + range.begin;
+        auto middle = std::partition(first, order.begin() + range.end,
+                                     [&](std::uint32_t id) { return binOf(id) <= best; });
+        std::uint32_t mid = std::uint32_t(middle - order.begin());
+        left = {range.begin, mid, {}, {}};
+        right = {mid, range.end, {}, {}};
+        for (int i = 0; i < kBins; ++i) {
+            Range& side = i <= best ? left : right;
+            side.bounds.grow(bins[i].bounds);
+            side.centroids.grow(bins[i].centroids);
+        }
+        return true;
+    }
+
+    // Halves the range at the centroid median along axis (by array position when every
+    // centroid is the same).
+    void medianSplit(const Range& range, int axis, bool sortByCentroid, Range& left, Range& right) {
+        std::uint32_t mid = range.begin + range.size() / 2;
+        if (sortByCentroid)
+            std::nth_element(order.begin() + range.begin, order.begin() + mid,
+                             order.begin() + range.end, [&](std::uint32_t a, std::uint32_t b) {
+                                 return centroid(a, axis) < centroid(b, axis);
+                             });
+        left = rangeOf(range.begin, mid);
+        right = rangeOf(mid, range.end);
+    }
+
+    // A leaf over range; a range holding both kinds becomes an interior node over a sphere
+    // leaf and a triangle leaf, since a leaf indexes one array.
+    Subtree makeLeaf(const Range& range, std::uint32_t depth, std::vector<gpu::GpuBvhNode>& out) {
+        auto first = order.begin() + range.begin, last = order.begin() + range.end;
+        auto isSphere = [&](std::uint32_t id) { return id < sphereCount_; };
+        auto middle = std::partition(first, last, isSphere);
+        if (middle == first || middle == last)
+            return {leafChild(range.bounds, range.begin, range.size(), middle == last), depth};
+        std::uint32_t mid = std::uint32_t(middle - order.begin());
+        Range spheres = rangeOf(range.begin, mid), triangles = rangeOf(mid, range.end);
+        const std::uint32_t self = std::uint32_t(out.size());
+        out.emplace_back();
+        setBvhChild(out[self], BvhSide::Left,
+                    leafChild(spheres.bounds, spheres.begin, spheres.size(), true));
+        setBvhChild(out[self], BvhSide::Right,
+                    leafChild(triangles.bounds, triangles.begin, triangles.size(), false));
+        return {interiorChild(range.bounds, self), depth + 1};
+    }
+
+    // Appends a subtree built in its own array, moving its node indices along: those of its
+    // nodes' interior children and that of its own reference, if interior.
+    static void splice(const std::vector<gpu::GpuBvhNode>& subtree, BvhChild& root,
+                       std::vector<gpu::GpuBvhNode>& out) {
+        const std::uint32_t offset = std::uint32_t(out.size());
+        for (gpu::GpuBvhNode node : subtree) {
+            for (BvhSide side : {BvhSide::Left, BvhSide::Right}) {
+                BvhChild child = bvhChild(node, side);
+                if (child.leaf) continue;
+                child.index += offset;
+                setBvhChild(node, side, child);
+            }
+            out.push_back(node);
+        }
+        if (!root.leaf) root.index += offset;
+    }
+
+    const float* boxes_;
+    std::uint32_t sphereCount_;
+    BvhSettings settings_;
+    std::vector<float> centroids_; // 3 floats per primitive
+};
+
+// The two sides of a node's fields (shared.h).
+struct ChildFields {
+    const glm::vec4& minAndIndex;
+    const glm::vec4& maxAndCount;
+};
+
+ChildFields fields(const gpu::GpuBvhNode& node, BvhSide side) {
+    if (side == BvhSide::Left) return {node.leftMinAndIndex, node.leftMaxAndCount};
+    return {node.rightMinAndIndex, node.rightMaxAndCount};
+}
+
+} // namespace
+
+BvhChild bvhChild(const gpu::GpuBvhNode& node, BvhSide side) {
+    const ChildFields f = fields(node, side);
+    const std::uint32_t word = std::bit_cast<std::uint32_t>(f.maxAndCount.w);
+    BvhChild child{glm::vec3(f.minAndIndex), glm::vec3(f.maxAndCount)};
+    child.index = std::bit_cast<std::uint32_t>(f.minAndIndex.w);
+    child.leaf = (word & BVH_LEAF) != 0;
+    if (child.leaf) {
+        child.count = word & BVH_COUNT_MASK;
+        child.spheres = (word & BVH_LEAF_SPHERES) != 0;
+    }
+    return child;
+}
+
+void setBvhChild(gpu::GpuBvhNode& node, BvhSide side, const BvhChild& child) {
+    if (child.leaf && child.count > BVH_COUNT_MASK)
+        throw std::invalid_argument("setBvhChild: a leaf of " + std::to_string(child.count) +
+                                    " primitives does not fit its count field");
+    const std::uint32_t word =
+        child.leaf ? BVH_LEAF | child.count | (child.spheres ? BVH_LEAF_SPHERES : 0u) : 0u;
+    const glm::vec4 minAndIndex(child.lo, std::bit_cast<float>(child.index));
+    const glm::vec4 maxAndCount(child.hi, std::bit_cast<float>(word));
+    if (side == BvhSide::Left) {
+        node.leftMinAndIndex = minAndIndex;
+        node.leftMaxAndCount = maxAndCount;
+    } else {
+        node.rightMinAndIndex = minAndIndex;
+        node.rightMaxAndCount = maxAndCount;
+    }
+}
+
+Bvh buildBvh(const PrimitiveBounds& input, const BvhSettings& settings) {
+    Bvh bvh;
+    const std::size_t n = input.size();
+    if (n == 0) return bvh;
+    if (n > BVH_COUNT_MASK || input.sphereCount > n)
+        throw std::invalid_argument("buildBvh: " + std::to_string(n) + " primitives are too many");
+    if (settings.maxLeafSize < 1)
+        throw std::invalid_argument("buildBvh: maxLeafSize must be at least 1");
+
+    Builder builder(input, settings);
+    Range root = builder.rangeOf(0, std::uint32_t(n));
+    if (builder.levelsNeeded(root.size()) > settings.maxDepth)
+        throw std::invalid_argument("buildBvh: " + std::to_string(n) +
+                                    " primitives cannot fit in " +
+                                    std::to_string(settings.maxDepth) + " levels");
+    // One interior node per leaf, less one; leaves are about half full.
+    bvh.nodes.reserve(n / std::max(settings.maxLeafSize / 2, 1u) + 1);
+    const Subtree tree = builder.build(root, 0, bvh.nodes);
+    bvh.depth = tree.depth;
+    if (tree.child.leaf) {
+        // The shader starts at node 0, an interior node: the lone leaf gets one, with an
+        // empty leaf beside it whose box is a point (shared.h).
+        BvhChild empty = leafChild(Box{tree.child.lo, tree.child.lo}, 0, 0, false);
+        bvh.nodes.emplace_back();
+        setBvhChild(bvh.nodes[0], BvhSide::Left, tree.child);
+        setBvhChild(bvh.nodes[0], BvhSide::Right, empty);
+    }
+
+    // The leaves in depth-first order are the leaf order, and their ranges of builder.order
+    // follow one another in that order: a primitive's slot is the number of its kind before
+    // it in builder.order, and a leaf's first slot that of its first primitive.
+    std::vector<std::uint32_t> slotAt(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t id = builder.order[i];
+        const bool sphere = id < input.sphereCount;
+        std::vector<std::uint32_t>& slots = sphere ? bvh.sphereOrder : bvh.triangleOrder;
+        slotAt[i] = std::uint32_t(slots.size());
+        slots.push_back(sphere ? id : id - input.sphereCount);
+    }
+    for (gpu::GpuBvhNode& node : bvh.nodes)
+        for (BvhSide side : {BvhSide::Left, BvhSide::Right}) {
+            BvhChild child = bvhChild(node, side);
+            if (!child.leaf || child.count == 0) continue;
+            child.index = slotAt[child.index];
+            setBvhChild(node, side, child);
+        }
+    return bvh;
+}

@@ -1,0 +1,68 @@
+// Bounding volume hierarchy over spheres and triangles together, built on the host with
+// a binned surface-area heuristic and flattened into the GpuBvhNode array of shared.h
+// (two-wide nodes holding both children's boxes; leaves live in their parent's reference).
+// Knows nothing of Vulkan or of the scene file: it sees one box per primitive.
+#pragma once
+
+#include "shared.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+// One axis-aligned box per primitive: the input of the builder.
+struct PrimitiveBounds {
+    std::vector<float> boxes;      // 6 floats per primitive: min x y z, max x y z
+    std::uint32_t sphereCount = 0; // primitives [0, sphereCount) are spheres, the rest triangles
+    std::size_t size() const { return boxes.size() / 6; }
+};
+
+// Whether the shader walks a hierarchy or tests every primitive (--accel).
+enum class Acceleration { Auto, Bvh, None };
+
+// Auto uses the hierarchy from this many primitives (spheres + triangles) up; below it,
+// testing everything is as fast on lavapipe (measured: docs/performance.md).
+constexpr std::size_t kBvhAutoThreshold = 16;
+
+inline bool useHierarchy(Acceleration acceleration, std::size_t primitives) {
+    if (acceleration == Acceleration::Auto) return primitives >= kBvhAutoThreshold;
+    return acceleration == Acceleration::Bvh && primitives > 0;
+}
+
+struct BvhSettings {
+    // Measured on lavapipe (docs/performance.md): leaves of up to 8 with a node visit costing two
+    // primitive tests render as fast as smaller leaves or a cost of 1, with a third fewer nodes.
+    std::uint32_t maxLeafSize = 8;           // a range at most this big may become a leaf
+    std::uint32_t maxDepth = BVH_STACK_SIZE; // no leaf deeper (root at depth 0)
+    float traversalCost = 2.0f; // cost of visiting a node (two box tests), in primitive tests
+    std::uint32_t threads = 2;  // threads for the top-level subtrees
+};
+
+struct Bvh {
+    std::vector<gpu::GpuBvhNode> nodes; // interior nodes, depth first; node 0 is the root
+    // Leaf order: slot k of the packed sphere (triangle) array holds the sphere (triangle)
+    // that was number sphereOrder[k] (triangleOrder[k]) in the input. Leaves index slots.
+    std::vector<std::uint32_t> sphereOrder;
+    std::vector<std::uint32_t> triangleOrder;
+    std::uint32_t depth = 0; // of the deepest leaf (a root that is a leaf: 0)
+};
+
+// Builds the hierarchy. Every primitive ends in exactly one leaf; every leaf holds one
+// kind and its slots are consecutive. An empty input gives an empty hierarchy.
+Bvh buildBvh(const PrimitiveBounds& bounds, const BvhSettings& settings = {});
+
+// A node's child reference (shared.h), decoded: what the shader reads from one side.
+struct BvhChild {
+    glm::vec3 lo{0.0f}, hi{0.0f}; // its box
+    bool leaf = false;
+    std::uint32_t index = 0; // interior: its node index; leaf: its first primitive slot
+    std::uint32_t count = 0; // leaf: its primitive count (0: the empty leaf of a lone root leaf)
+    bool spheres = false;    // leaf: its primitives are spheres, else triangles
+    bool operator==(const BvhChild&) const = default;
+};
+
+enum class BvhSide { Left, Right };
+
+BvhChild bvhChild(const gpu::GpuBvhNode& node, BvhSide side);
+// Stores child on that side of node; throws when a leaf's count does not fit its word.
+void setBvhChild(gpu::GpuBvhNode& node, BvhSide side, const BvhChild& child);

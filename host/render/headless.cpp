@@ -1,0 +1,128 @@
+#include "render/headless.h"
+
+#include "render/interrupt.h"
+#include "gpu/vk_check.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// The last submission of a frame also copies the image to the readback buffer.
+void recordReadback(const HeadlessTarget& target, const Renderer& renderer) {
+    const Image& output = renderer.outputImage;
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {output.width, output.height, 1};
+    vkCmdCopyImageToBuffer(target.commands, output.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           target.readbackBuffer.buffer, 1, &region);
+    // Make the copied bytes visible to the host's reads after the fence.
+    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(target.commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
+}
+
+// Submits the recorded command buffer and waits for it; returns submit to fence in ms.
+double submitAndTime(HeadlessTarget& target, const Context& context) {
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &target.commands;
+    const Clock::time_point start = Clock::now();
+    VK_CHECK(vkQueueSubmit(context.queue, 1, &submit, target.submissionDone));
+    VK_CHECK(vkWaitForFences(context.device, 1, &target.submissionDone, VK_TRUE, UINT64_MAX));
+    const double milliseconds = millisecondsSince(start);
+    VK_CHECK(vkResetFences(context.device, 1, &target.submissionDone));
+    return milliseconds;
+}
+
+} // namespace
+
+void createHeadlessTarget(HeadlessTarget& target, const Context& context, const Renderer& renderer,
+                          std::uint32_t fixedRegionSide) {
+    VkDeviceSize bytes = VkDeviceSize(renderer.outputImage.width) * renderer.outputImage.height * 4;
+    target.readbackBuffer = createHostBuffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    // No watchdog guards a CPU device: it gets longer submissions (host/render/region_planner.h).
+    const double targetMs = context.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU
+                                ? kCpuTargetSubmissionMs
+                                : kTargetSubmissionMs;
+    target.planner = createRegionPlanner(fixedRegionSide, targetMs);
+
+    VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    allocateInfo.commandPool = context.commandPool;
+    allocateInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    allocateInfo.commandBufferCount = 1;
+    VK_CHECK(vkAllocateCommandBuffers(context.device, &allocateInfo, &target.commands));
+
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VK_CHECK(vkCreateFence(context.device, &fenceInfo, nullptr, &target.submissionDone));
+}
+
+// One submission per region, each waited for before the next is recorded: the time of
+// one sizes the next (host/render/region_planner.h), and the queue never holds more than one
+// region's work, so nothing else waits behind a long frame.
+FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context,
+                                const Renderer& renderer, ProgressMode progressMode) {
+    const Image& output = renderer.outputImage;
+    Progress progress = startProgress(progressMode, output.width, output.height);
+    const double totalPixels = double(output.width) * output.height;
+    double pixelsDone = 0;
+    FrameTiming timing;
+    timing.gpuMs = renderer.timestampPool ? 0.0 : -1.0;
+
+    beginFrame(target.planner, output.width, output.height);
+    const Clock::time_point frameStart = Clock::now();
+    TraceRegion region;
+    while (nextRegion(target.planner, region)) {
+        throwIfInterrupted(); // Ctrl-C: the last submission is done, nothing more is sent
+        VK_CHECK(vkResetCommandBuffer(target.commands, 0));
+        VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+        VK_CHECK(vkBeginCommandBuffer(target.commands, &begin));
+        if (timing.submissions == 0) recordTraceBegin(renderer, target.commands);
+        recordTraceRegion(renderer, target.commands, region);
+        const bool last = frameCovered(target.planner);
+        if (last) {
+            recordTraceEnd(renderer, target.commands);
+            recordReadback(target, renderer);
+        }
+        VK_CHECK(vkEndCommandBuffer(target.commands));
+
+        const double milliseconds = submitAndTime(target, context);
+        regionTraced(target.planner, region, milliseconds);
+        ++timing.submissions;
+        timing.longestSubmissionMs = std::max(timing.longestSubmissionMs, milliseconds);
+        if (renderer.timestampPool) timing.gpuMs += lastTraceGpuMilliseconds(renderer, context);
+        pixelsDone += double(region.width) * region.height;
+        updateProgress(progress, pixelsDone / totalPixels);
+    }
+    timing.wallMs = millisecondsSince(frameStart);
+    finishProgress(progress, timing.submissions, timing.longestSubmissionMs);
+    return timing;
+}
+
+Image8 readHeadlessImage(const HeadlessTarget& target, const Renderer& renderer) {
+    Image8 image;
+    image.width = static_cast<int>(renderer.outputImage.width);
+    image.height = static_cast<int>(renderer.outputImage.height);
+    image.rgba.resize(std::size_t(image.width) * image.height * 4);
+    std::memcpy(image.rgba.data(), target.readbackBuffer.mapped, image.rgba.size());
+    return image;
+}
+
+void destroyHeadlessTarget(HeadlessTarget& target, const Context& context) {
+    if (context.device) vkDeviceWaitIdle(context.device);
+    if (target.submissionDone) vkDestroyFence(context.device, target.submissionDone, nullptr);
+    if (target.commands)
+        vkFreeCommandBuffers(context.device, context.commandPool, 1, &target.commands);
+    destroyBuffer(context, target.readbackBuffer);
+    target = HeadlessTarget{};
+}

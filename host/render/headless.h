@@ -1,0 +1,38 @@
+// Headless frames: trace in several short submissions, copy the output image to host
+// memory, wait. No window system.
+#pragma once
+
+#include "base/image_io.h"
+#include "render/progress.h"
+#include "render/renderer.h"
+#include "render/region_planner.h"
+
+struct HeadlessTarget {
+    Buffer readbackBuffer; // host-visible copy of the output image, tightly packed RGBA8
+    VkCommandBuffer commands = VK_NULL_HANDLE;
+    VkFence submissionDone = VK_NULL_HANDLE;
+    RegionPlanner planner; // what each submission traces; learns across frames
+};
+
+// What one frame cost.
+struct FrameTiming {
+    double wallMs = 0; // first submit to last fence, the host's work in between included
+    double gpuMs = 0;  // sum of the timestamp intervals of the regions; < 0 without timestamps
+    std::uint32_t submissions = 0;
+    double longestSubmissionMs = 0; // submit to fence
+};
+
+// fixedRegionSide > 0 (--region-size) makes every region that square; 0 adapts the regions
+// to about kTargetSubmissionMs each.
+void createHeadlessTarget(HeadlessTarget& target, const Context& context, const Renderer& renderer,
+                          std::uint32_t fixedRegionSide = 0);
+
+// Traces one frame, region by region, and copies it to the readback buffer.
+FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context,
+                                const Renderer& renderer,
+                                ProgressMode progress = ProgressMode::Off);
+
+// The last rendered frame as an image.
+Image8 readHeadlessImage(const HeadlessTarget& target, const Renderer& renderer);
+
+void destroyHeadlessTarget(HeadlessTarget& target, const Context& context);

@@ -1,0 +1,286 @@
+#include "render/renderer.h"
+
+#include "gpu/shader_compiler.h"
+#include "shared.h"
+#include "gpu/vk_check.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <regex>
+#include <stdexcept>
+
+namespace {
+
+// Each dispatch covers at most this many pixels a side. How much of the image one
+// submission traces is the caller's choice (host/render/region_planner.h for headless frames).
+constexpr std::uint32_t kMaxDispatchSide = 1024;
+
+void createDescriptors(Renderer& renderer, const Context& context) {
+    VkDescriptorPoolSize sizes[] = {
+        {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
+        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, BINDING_COUNT - 1},
+    };
+    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    poolInfo.maxSets = 1;
+    poolInfo.poolSizeCount = 2;
+    poolInfo.pPoolSizes = sizes;
+    VK_CHECK(vkCreateDescriptorPool(context.device, &poolInfo, nullptr, &renderer.descriptorPool));
+
+    VkDescriptorSetAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    allocateInfo.descriptorPool = renderer.descriptorPool;
+    allocateInfo.descriptorSetCount = 1;
+    allocateInfo.pSetLayouts = &renderer.pipeline.setLayout;
+    VK_CHECK(vkAllocateDescriptorSets(context.device, &allocateInfo, &renderer.descriptorSet));
+
+    // The scene's ranges never change; the output image and the running sum are written by
+    // resizeOutput.
+    std::vector<VkWriteDescriptorSet> writes;
+    for (std::uint32_t binding = 0; binding < BINDING_COUNT; ++binding) {
+        if (binding == BINDING_OUTPUT_IMAGE || binding == BINDING_ACCUMULATION) continue;
+        VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        write.dstSet = renderer.descriptorSet;
+        write.dstBinding = binding;
+        write.descriptorCount = 1;
+        write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        write.pBufferInfo = &renderer.scene.ranges[binding];
+        writes.push_back(write);
+    }
+    vkUpdateDescriptorSets(context.device, static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
+}
+
+gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t dispatchX, std::uint32_t dispatchY,
+                                SampleRange samples) {
+    const RenderSettings& settings = renderer.settings;
+    const double tanHalfFov = std::tan(settings.fovDegrees * 0.5 * M_PI / 180.0);
+    const double aspect = double(settings.width) / double(settings.height);
+    gpu::GpuFrameParams params{};
+    params.background = glm::vec4(settings.background, 0.0f);
+    params.ambient = renderer.scene.ambient;
+    params.camera = glm::vec4(float(aspect * tanHalfFov), float(tanHalfFov), 0.0f, 0.0f);
+    const glm::dquat orientation = cameraOrientation(settings.camera);
+    params.cameraOrigin = glm::vec4(glm::vec3(settings.camera.position), 0.0f);
+    params.cameraOrientation =
+        glm::vec4(float(orientation.x), float(orientation.y), float(orientation.z), float(orientation.w));
+    params.image = glm::uvec4(settings.width, settings.height, settings.samplesPerPixel,
+                              std::min<std::uint32_t>(settings.depth, MAX_DEPTH));
+    params.counts = glm::uvec4(renderer.scene.sphereCount, renderer.scene.triangleCount,
+                               renderer.scene.lightCount, settings.kernel.seed);
+    params.dispatch = glm::uvec4(dispatchX, dispatchY, samples.first, samples.count);
+    return params;
+}
+
+// Packs the scene in the hierarchy's leaf order, keeping the hierarchy itself only when
+// it pays (settings.acceleration), and says which on stderr. The leaf order is used
+// either way, so both paths see the same primitive order and break ties alike.
+PackedScene packWithHierarchy(const Scene& scene, Acceleration acceleration, Precision precision) {
+    PackedScene packed = packScene(scene, precision);
+    const auto start = std::chrono::steady_clock::now();
+    Bvh bvh = buildBvh(primitiveBounds(packed));
+    const double buildMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    applyLeafOrder(packed, bvh);
+    const std::size_t primitives = packed.spheres.size() + packed.triangleVertices.size() / 3;
+    if (useHierarchy(acceleration, primitives)) {
+        std::fprintf(stderr, "Acceleration: BVH, %zu two-wide nodes, depth %u, built in %.1f ms\n", bvh.nodes.size(),
+                     bvh.depth, buildMs);
+        packed.bvhNodes = std::move(bvh.nodes);
+    } else {
+        std::fprintf(stderr, "Acceleration: none, every primitive tested (%zu primitives)\n", primitives);
+    }
+    return packed;
+}
+
+} // namespace
+
+TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderSettings& settings) {
+    TraceSpecialization specialization;
+    specialization.useHierarchy = !packed.bvhNodes.empty();
+    specialization.hasSpheres = !packed.spheres.empty();
+    specialization.hasTriangles = !packed.triangleVertices.empty();
+    // Spheres and vertices only refer to materials in the list, so a ks > 0 that no
+    // primitive uses is impossible; the check is on the float values the kernel reads.
+    const bool anySpecular =
+        std::any_of(packed.materials.begin(), packed.materials.end(), [](const gpu::GpuMaterial& m) {
+            return m.specular.x > 0.0f || m.specular.y > 0.0f || m.specular.z > 0.0f;
+        });
+    specialization.hasSpecular = anySpecular;
+    specialization.hasMirrors = anySpecular && settings.depth > 0;
+    if (settings.generalKernel) {
+        // Every content-dependent part stays in: the kernel any scene could run. The
+        // spheres' and triangles' loops still stop at their counts (0 for an absent kind),
+        // and the reflection loop at depth and ks = 0, so the image does not change.
+        specialization.hasSpheres = specialization.hasTriangles = VK_TRUE;
+        specialization.hasSpecular = specialization.hasMirrors = VK_TRUE;
+    }
+    applyKernelChoices(specialization, settings.kernel);
+    return specialization;
+}
+
+void createRenderer(Renderer& renderer, const Context& context, const Scene& scene,
+                    const RenderSettings& settings) {
+    renderer.settings = settings;
+    const Precision precision = settings.kernel.precision;
+    if (precision == Precision::Fp64 && !context.float64Enabled)
+        throw std::logic_error("--precision fp64, but the device was created without shaderFloat64 "
+                               "(createDevice needFloat64)");
+    PackedScene packed = packWithHierarchy(scene, settings.acceleration, precision);
+    renderer.specialization = traceSpecialization(packed, settings);
+    const TraceSpecialization& specialization = renderer.specialization;
+    renderer.scene = uploadScene(context, packed);
+    packed = PackedScene{}; // the GPU holds it now
+    if (settings.shaderDirectory.empty()) {
+        renderer.pipeline = loadTracePipeline(context, settings.cacheDirectory, specialization, precision);
+    } else {
+        // The user's sources change under us, so neither SPIR-V nor the driver's cache is kept.
+        std::vector<std::uint32_t> spirv;
+        try {
+            spirv = compileComputeShader("trace.comp", directoryShaderLoader(settings.shaderDirectory),
+                                         precisionPreamble(precision));
+        } catch (const ShaderCompileError& error) {
+            // glslang names files as included ("ERROR: shade.glsl:12: ..."); with the folder
+            // in front, an editor or terminal can jump to the line.
+            const std::regex located("(ERROR|WARNING): ([A-Za-z0-9_.-]+):([0-9]+):");
+            const std::string log = std::regex_replace(
+                error.what(), located, "$1: " + (settings.shaderDirectory / "").string() + "$2:$3:");
+            throw ShaderCompileError("the kernel in " + settings.shaderDirectory.string() +
+                                     " does not compile (--shader-dir):\n" + log);
+        }
+        renderer.pipeline = createTracePipeline(context, spirv, VK_NULL_HANDLE, specialization);
+    }
+    const std::size_t primitives = renderer.scene.sphereCount + renderer.scene.triangleCount;
+    if (primitives > 0)
+        std::fprintf(stderr, "Scene memory: %llu bytes, %.1f bytes per primitive\n",
+                     static_cast<unsigned long long>(renderer.scene.bytes), double(renderer.scene.bytes) / double(primitives));
+    createDescriptors(renderer, context);
+    if (context.timestampsSupported) {
+        VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+        queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
+        queryInfo.queryCount = 2;
+        VK_CHECK(vkCreateQueryPool(context.device, &queryInfo, nullptr, &renderer.timestampPool));
+    }
+    resizeOutput(renderer, context, settings.width, settings.height);
+}
+
+void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t width, std::uint32_t height) {
+    VK_CHECK(vkDeviceWaitIdle(context.device));
+    destroyImage(context, renderer.outputImage);
+    renderer.settings.width = width;
+    renderer.settings.height = height;
+    renderer.outputImage =
+        createImage(context, width, height, VK_FORMAT_R8G8B8A8_UNORM,
+                    VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+
+    VkDescriptorImageInfo imageInfo{VK_NULL_HANDLE, renderer.outputImage.view, VK_IMAGE_LAYOUT_GENERAL};
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = renderer.descriptorSet;
+    write.dstBinding = BINDING_OUTPUT_IMAGE;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    write.pImageInfo = &imageInfo;
+    vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
+
+    // Its contents never matter: the first dispatch of a progressive run writes before
+    // it reads, and one-pass dispatches never touch it.
+    destroyBuffer(context, renderer.accumulation);
+    const VkDeviceSize accumulationBytes =
+        renderer.settings.progressive ? VkDeviceSize(width) * height * sizeof(glm::vec4) : sizeof(glm::vec4);
+    const std::vector<std::uint8_t> zeros(accumulationBytes, 0);
+    renderer.accumulation =
+        createDeviceBuffer(context, zeros.data(), accumulationBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    VkDescriptorBufferInfo bufferInfo{renderer.accumulation.buffer, 0, VK_WHOLE_SIZE};
+    write.dstBinding = BINDING_ACCUMULATION;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    write.pImageInfo = nullptr;
+    write.pBufferInfo = &bufferInfo;
+    vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
+}
+
+void setCamera(Renderer& renderer, const CameraPose& camera) { renderer.settings.camera = camera; }
+
+void recordTraceBegin(const Renderer& renderer, VkCommandBuffer commands) {
+    // Wait for the previous frame's copy or blit to finish reading before writing.
+    // Every pixel is rewritten, so the old contents are discarded (UNDEFINED). The
+    // barrier also orders the writes of later submissions of this frame: its scope is
+    // everything after it in submission order.
+    transitionImage(commands, renderer.outputImage.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                    VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                    VK_ACCESS_SHADER_WRITE_BIT);
+}
+
+namespace {
+
+void recordRegion(const Renderer& renderer, VkCommandBuffer commands, const TraceRegion& region,
+                  SampleRange samples) {
+    if (renderer.timestampPool) {
+        vkCmdResetQueryPool(commands, renderer.timestampPool, 0, 2);
+        vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, renderer.timestampPool, 0);
+    }
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline.pipeline);
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline.layout, 0, 1,
+                            &renderer.descriptorSet, 0, nullptr);
+    // Regions write disjoint pixels, so the dispatches need no barrier between them.
+    const std::uint32_t right = region.x + region.width, bottom = region.y + region.height;
+    for (std::uint32_t dispatchY = region.y; dispatchY < bottom; dispatchY += kMaxDispatchSide) {
+        for (std::uint32_t dispatchX = region.x; dispatchX < right; dispatchX += kMaxDispatchSide) {
+            gpu::GpuFrameParams params = frameParams(renderer, dispatchX, dispatchY, samples);
+            vkCmdPushConstants(commands, renderer.pipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                               sizeof(params), &params);
+            std::uint32_t dispatchWidth = std::min(kMaxDispatchSide, right - dispatchX);
+            std::uint32_t dispatchHeight = std::min(kMaxDispatchSide, bottom - dispatchY);
+            vkCmdDispatch(commands, (dispatchWidth + WORKGROUP_SIZE_X - 1) / WORKGROUP_SIZE_X,
+                          (dispatchHeight + WORKGROUP_SIZE_Y - 1) / WORKGROUP_SIZE_Y, 1);
+        }
+    }
+    if (renderer.timestampPool)
+        vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, renderer.timestampPool, 1);
+}
+
+} // namespace
+
+void recordTraceRegion(const Renderer& renderer, VkCommandBuffer commands, const TraceRegion& region) {
+    recordRegion(renderer, commands, region, {});
+}
+
+void recordTraceEnd(const Renderer& renderer, VkCommandBuffer commands) {
+    // Make the kernel's writes, from this and earlier submissions, visible to the copy
+    // or blit that follows.
+    transitionImage(commands, renderer.outputImage.image, VK_IMAGE_LAYOUT_GENERAL,
+                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                    VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+}
+
+void recordTrace(const Renderer& renderer, VkCommandBuffer commands, SampleRange samples) {
+    recordTraceBegin(renderer, commands);
+    if (samples.count > 0) {
+        // The running sum written by the previous frame's dispatches is read by this one's.
+        VkMemoryBarrier sum{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+        sum.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+        sum.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+        vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                             0, 1, &sum, 0, nullptr, 0, nullptr);
+    }
+    recordRegion(renderer, commands, {0, 0, renderer.outputImage.width, renderer.outputImage.height}, samples);
+    recordTraceEnd(renderer, commands);
+}
+
+double lastTraceGpuMilliseconds(const Renderer& renderer, const Context& context) {
+    if (!renderer.timestampPool) return -1.0;
+    std::uint64_t ticks[2] = {};
+    VK_CHECK(vkGetQueryPoolResults(context.device, renderer.timestampPool, 0, 2, sizeof(ticks), ticks,
+                                   sizeof(std::uint64_t),
+                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    return double(ticks[1] - ticks[0]) * context.properties.limits.timestampPeriod * 1e-6;
+}
+
+void destroyRenderer(Renderer& renderer, const Context& context) {
+    if (context.device) vkDeviceWaitIdle(context.device);
+    destroyImage(context, renderer.outputImage);
+    destroyBuffer(context, renderer.accumulation);
+    if (renderer.timestampPool) vkDestroyQueryPool(context.device, renderer.timestampPool, nullptr);
+    if (renderer.descriptorPool) vkDestroyDescriptorPool(context.device, renderer.descriptorPool, nullptr);
+    destroyGpuScene(context, renderer.scene);
+    destroyTracePipeline(context, renderer.pipeline);
+    renderer = Renderer{};
+}

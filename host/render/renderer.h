@@ -1,0 +1,96 @@
+// Records the trace kernel over the output image. Shared by the headless path and
+// the window: both trace into the same RGBA8 UNORM image with the same kernel.
+#pragma once
+
+#include "scene/camera.h"
+#include "gpu/context.h"
+#include "render/trace_pipeline.h"
+#include "gpu/resources.h"
+#include "scene/scene.h"
+#include "render/scene_packing.h"
+#include "render/region_planner.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <filesystem>
+
+struct RenderSettings {
+    std::uint32_t width = 640;
+    std::uint32_t height = 480;
+    std::uint32_t samplesPerPixel = 1;
+    std::uint32_t depth = 5;
+    glm::vec3 background{1.0f};
+    double fovDegrees = 60.0;
+    Acceleration acceleration = Acceleration::Auto; // --accel: hierarchy or every primitive
+    KernelChoices kernel; // --sampler, --seed, --precision and the method switches
+    std::filesystem::path cacheDirectory; // shader and pipeline cache; empty: none (--no-cache)
+    CameraPose camera;                    // the default camera unless --camera-* moved it
+    std::filesystem::path shaderDirectory; // --shader-dir: compile from here, uncached; empty: embedded
+    bool progressive = false; // the window: keep a per-pixel running sum (BINDING_ACCUMULATION)
+    // --general-kernel (hidden): compile the kernel as if the scene held everything (spheres,
+    // triangles, highlights, mirrors), keeping the method choices and the hierarchy, so that
+    // tools/kernel_costs can measure what specialising for the scene's content gains. Same image.
+    bool generalKernel = false;
+};
+
+// The samples one dispatch adds (GpuFrameParams.dispatch.zw): count 0 traces all of
+// samplesPerPixel in one pass; otherwise samples first..first+count-1 are added to the
+// running sum (RenderSettings::progressive), first 0 starting it afresh.
+struct SampleRange {
+    std::uint32_t first = 0;
+    std::uint32_t count = 0;
+};
+
+struct Renderer {
+    TracePipeline pipeline;
+    GpuScene scene;
+    VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
+    VkDescriptorSet descriptorSet = VK_NULL_HANDLE;
+    // The kernel's output: written in VK_IMAGE_LAYOUT_GENERAL by the compute
+    // shader, then read in TRANSFER_SRC_OPTIMAL by a copy (headless) or a blit (window).
+    Image outputImage;
+    // vec4 per pixel of outputImage: the running sum of the progressive view, in
+    // VK_ACCESS_SHADER_READ/WRITE between dispatches; one vec4 when not progressive.
+    Buffer accumulation;
+    VkQueryPool timestampPool = VK_NULL_HANDLE; // two timestamps around the trace
+    RenderSettings settings;
+    TraceSpecialization specialization; // what the kernel was compiled for (--bench reports it)
+};
+
+// Compiles the kernel, uploads the scene and creates the output image. The kernel is
+// specialised for the settings and for what the scene holds (traceSpecialization). A
+// shader that does not compile throws ShaderCompileError (host/gpu/shader_compiler.h); the
+// caller destroys the partly created renderer.
+void createRenderer(Renderer& renderer, const Context& context, const Scene& scene,
+                    const RenderSettings& settings);
+
+// The specialization constants for this packed scene and these settings: its primitive
+// kinds, hierarchy, whether any material has ks > 0, and the method choices. With
+// settings.generalKernel the scene's content is ignored (everything on); the rest stays.
+TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderSettings& settings);
+
+// Recreates the output image at a new size (the window was resized).
+void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t width, std::uint32_t height);
+
+// Records the whole frame's trace in one command buffer (the window): all samples, or
+// with samples.count > 0 the next ones of the progressive sum. Afterwards the output
+// image is ready to be read by a transfer command (copy or blit) in
+// VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL.
+void recordTrace(const Renderer& renderer, VkCommandBuffer commands, SampleRange samples = {});
+
+// Points the camera elsewhere (the window's controls); takes effect at the next record.
+void setCamera(Renderer& renderer, const CameraPose& camera);
+
+// The same frame spread over several submissions (headless): recordTraceBegin in the
+// first command buffer, recordTraceRegion for each region, recordTraceEnd in the last.
+// The regions must cover the image; each pixel's value does not depend on them.
+void recordTraceBegin(const Renderer& renderer, VkCommandBuffer commands);
+void recordTraceRegion(const Renderer& renderer, VkCommandBuffer commands, const TraceRegion& region);
+void recordTraceEnd(const Renderer& renderer, VkCommandBuffer commands);
+
+// The GPU time of the last finished recordTraceRegion from the timestamp queries, or a
+// negative value when the device has no timestamps.
+double lastTraceGpuMilliseconds(const Renderer& renderer, const Context& context);
+
+void destroyRenderer(Renderer& renderer, const Context& context);

@@ -1,0 +1,358 @@
+#include "render/scene_packing.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+// The C++ mirror must have exactly the std430 layout the shader reads.
+static_assert(sizeof(gpu::GpuMaterial) == 32);
+static_assert(sizeof(gpu::GpuLight) == 32);
+static_assert(sizeof(gpu::GpuBvhNode) == 64, "one node per 64-byte cache line");
+static_assert(offsetof(gpu::GpuBvhNode, leftMaxAndCount) == 16);
+static_assert(offsetof(gpu::GpuBvhNode, rightMinAndIndex) == 32);
+static_assert(offsetof(gpu::GpuBvhNode, rightMaxAndCount) == 48);
+static_assert(sizeof(gpu::GpuFrameParams) == 128);
+static_assert(sizeof(gpu::GpuFrameParams) <= 128, "push constants are limited to 128 bytes");
+static_assert(offsetof(gpu::GpuFrameParams, image) == 80);
+static_assert(offsetof(gpu::GpuFrameParams, dispatch) == 112);
+
+namespace {
+
+// A 64-bit hash of the raw bytes of a trivially copyable value, so that exactly equal
+// values (bit for bit) are merged and nothing else is.
+template <typename T> std::uint64_t dedupHash(const T& value) {
+    static_assert(std::is_trivially_copyable_v<T> && sizeof(T) % 4 == 0);
+    const auto* bytes = reinterpret_cast<const unsigned char*>(&value);
+    std::uint64_t hash = 0x9E3779B97F4A7C15ull;
+    std::size_t i = 0;
+    for (; i + 8 <= sizeof(T); i += 8) {
+        std::uint64_t word;
+        std::memcpy(&word, bytes + i, 8);
+        hash = std::rotl((hash ^ word) * 0xFF51AFD7ED558CCDull, 29);
+    }
+    if (i < sizeof(T)) {
+        std::uint32_t word;
+        std::memcpy(&word, bytes + i, 4);
+        hash = std::rotl((hash ^ word) * 0xFF51AFD7ED558CCDull, 29);
+    }
+    // MurmurHash3's finaliser: every input bit reaches every output bit.
+    hash ^= hash >> 33;
+    hash *= 0xC4CEB9FE1A85EC53ull;
+    return hash ^ (hash >> 33);
+}
+
+// Gives each distinct value an index, in order of first appearance. An open-addressing
+// table (linear probing, at most half full) of 8-byte slots holding the value's index
+// and 32 bits of its hash, so that a probe rarely looks at a value that differs: a
+// million-triangle mesh makes three million look-ups, and std::unordered_map's node per
+// entry made them cost half a second.
+template <typename T> class Deduplicator {
+  public:
+    Deduplicator(std::vector<T>& values, std::size_t expectedDistinct) : values_(values) {
+        slots_.resize(std::bit_ceil(std::max<std::size_t>(2 * expectedDistinct, 16)));
+    }
+
+    std::uint32_t indexOf(const T& value) {
+        const std::uint64_t hash = dedupHash(value);
+        const auto tag = static_cast<std::uint32_t>(hash >> 32);
+        const std::size_t mask = slots_.size() - 1;
+        std::size_t at = hash & mask;
+        for (; slots_[at].indexPlusOne != 0; at = (at + 1) & mask) {
+            const Slot slot = slots_[at];
+            if (slot.tag == tag &&
+                std::memcmp(&values_[slot.indexPlusOne - 1], &value, sizeof(T)) == 0)
+                return slot.indexPlusOne - 1;
+        }
+        const auto index = static_cast<std::uint32_t>(values_.size());
+        values_.push_back(value);
+        slots_[at] = {index + 1, tag};
+        if (2 * values_.size() > slots_.size()) grow();
+        return index;
+    }
+
+  private:
+    struct Slot {
+        std::uint32_t indexPlusOne = 0; // 0: empty
+        std::uint32_t tag = 0;          // the hash's upper half
+    };
+
+    void grow() {
+        std::vector<Slot> slots(2 * slots_.size());
+        const std::size_t mask = slots.size() - 1;
+        for (std::size_t i = 0; i < values_.size(); ++i) {
+            const std::uint64_t hash = dedupHash(values_[i]);
+            std::size_t at = hash & mask;
+            while (slots[at].indexPlusOne != 0)
+                at = (at + 1) & mask;
+            slots[at] = {std::uint32_t(i + 1), static_cast<std::uint32_t>(hash >> 32)};
+        }
+        slots_.swap(slots);
+    }
+
+    std::vector<T>& values_;
+    std::vector<Slot> slots_;
+};
+
+glm::vec4 toVec4(const glm::dvec3& v, double w = 0.0) {
+    return glm::vec4(glm::vec3(v), static_cast<float>(w));
+}
+
+gpu::GpuMaterial toGpuMaterial(const Material& material) {
+    return {toVec4(material.diffuse, material.shininess), toVec4(material.specular)};
+}
+
+// A vertex as the GPU stores it, the unit of vertex deduplication.
+struct PackedVertex {
+    glm::vec4 position;
+    glm::vec4 normal;
+    std::uint32_t material;
+    std::uint32_t padding; // zero, so equal vertices have equal bytes
+    glm::dvec4 exactPosition; // fp64: the position in double; fp32: zero
+};
+
+} // namespace
+
+PackedScene packScene(const Scene& scene, Precision precision) {
+    const bool fp64 = precision == Precision::Fp64;
+    PackedScene packed;
+    packed.ambient = toVec4(scene.ambient);
+    Deduplicator<gpu::GpuMaterial> materials(packed.materials, 64);
+    // Neighbouring vertices often share a material: compare with the last one first.
+    gpu::GpuMaterial lastMaterial{};
+    std::uint32_t lastMaterialIndex = UINT32_MAX;
+    auto materialIndex = [&](const Material& material) {
+        const gpu::GpuMaterial packedMaterial = toGpuMaterial(material);
+        if (lastMaterialIndex == UINT32_MAX ||
+            std::memcmp(&packedMaterial, &lastMaterial, sizeof lastMaterial) != 0) {
+            lastMaterial = packedMaterial;
+            lastMaterialIndex = materials.indexOf(packedMaterial);
+        }
+        return lastMaterialIndex;
+    };
+
+    packed.spheres.reserve(scene.spheres.size());
+    packed.sphereMaterials.reserve(scene.spheres.size());
+    for (const Sphere& sphere : scene.spheres) {
+        packed.spheres.push_back(toVec4(sphere.center, sphere.radius));
+        packed.sphereMaterials.push_back(materialIndex(sphere.material));
+        if (fp64) packed.spheres64.push_back(glm::dvec4(sphere.center, sphere.radius));
+    }
+
+    // A closed mesh has about half as many vertices as triangles.
+    std::vector<PackedVertex> vertices;
+    Deduplicator<PackedVertex> vertexIndices(vertices, scene.triangles.size() / 2);
+    packed.triangleVertices.reserve(3 * scene.triangles.size());
+    for (const Triangle& triangle : scene.triangles) {
+        for (const Vertex& vertex : triangle.vertices) {
+            PackedVertex packedVertex{};
+            packedVertex.position = toVec4(vertex.position);
+            packedVertex.normal = toVec4(vertex.normal);
+            packedVertex.material = materialIndex(vertex.material);
+            if (fp64) packedVertex.exactPosition = glm::dvec4(vertex.position, 0.0);
+            packed.triangleVertices.push_back(vertexIndices.indexOf(packedVertex));
+        }
+    }
+    packed.vertexPositions.reserve(vertices.size());
+    packed.vertexNormals.reserve(3 * vertices.size());
+    // 28 bytes a vertex: the material index rides in the position's unused w, and the
+    // normal takes three floats rather than a padded vec4.
+    for (const PackedVertex& vertex : vertices) {
+        packed.vertexPositions.push_back(
+            glm::vec4(glm::vec3(vertex.position), std::bit_cast<float>(vertex.material)));
+        packed.vertexNormals.insert(packed.vertexNormals.end(),
+                                    {vertex.normal.x, vertex.normal.y, vertex.normal.z});
+        if (fp64)
+            packed.vertexPositions64.push_back(
+                glm::dvec4(glm::dvec3(vertex.exactPosition), double(vertex.material)));
+    }
+
+    for (const Light& light : scene.lights)
+        packed.lights.push_back({toVec4(light.position), toVec4(light.color)});
+    return packed;
+}
+
+// Primitive boxes. A triangle's box is the exact min and max of its float corners, so its
+// edges lie in the box's closed faces and the robust slab test (shaders/bvh.glsl) admits
+// every ray that the watertight triangle test admits through an edge or a vertex. A
+// sphere's box is centre -+ radius rounded to float, which can cut into the sphere by
+// half an ulp, and the sphere test itself rounds; it is enlarged by 2^-20 of its largest
+// coordinate magnitude (about 8 ulps) so that a ray the sphere test reports as grazing it
+// also enters its box, and the hierarchy finds exactly the hits that testing every
+// primitive finds.
+namespace {
+
+constexpr double kSphereBoxMargin = 1.0 / 1048576.0;
+
+void appendBox(std::vector<float>& boxes, glm::vec3 lo, glm::vec3 hi) {
+    boxes.insert(boxes.end(), {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z});
+}
+
+// The nearest float at or below (direction -1) or above (+1) each coordinate: a float box
+// that holds the double one.
+glm::vec3 roundOutward(glm::dvec3 v, float direction) {
+    glm::vec3 rounded(v);
+    for (int axis = 0; axis < 3; ++axis)
+        if ((double(rounded[axis]) - v[axis]) * direction < 0.0)
+            rounded[axis] = std::nextafter(rounded[axis], direction * INFINITY);
+    return rounded;
+}
+
+void appendBox(std::vector<float>& boxes, glm::dvec3 lo, glm::dvec3 hi) {
+    appendBox(boxes, roundOutward(lo, -1.0f), roundOutward(hi, 1.0f));
+}
+
+} // namespace
+
+std::uint32_t vertexMaterial(const PackedScene& packed, std::size_t v) {
+    return std::bit_cast<std::uint32_t>(packed.vertexPositions.at(v).w);
+}
+
+// The fp64 boxes: the same margins, computed in double and rounded outward.
+PrimitiveBounds primitiveBounds64(const PackedScene& packed) {
+    PrimitiveBounds bounds;
+    bounds.sphereCount = std::uint32_t(packed.spheres64.size());
+    bounds.boxes.reserve(6 * (packed.spheres64.size() + packed.triangleVertices.size() / 3));
+    for (const glm::dvec4& sphere : packed.spheres64) {
+        glm::dvec3 center(sphere);
+        double magnitude =
+            std::max({std::abs(center.x), std::abs(center.y), std::abs(center.z)}) + sphere.w;
+        double reach = sphere.w + kSphereBoxMargin * magnitude;
+        appendBox(bounds.boxes, center - reach, center + reach);
+    }
+    for (std::size_t i = 0; i + 2 < packed.triangleVertices.size(); i += 3) {
+        glm::dvec3 a(packed.vertexPositions64[packed.triangleVertices[i]]);
+        glm::dvec3 b(packed.vertexPositions64[packed.triangleVertices[i + 1]]);
+        glm::dvec3 c(packed.vertexPositions64[packed.triangleVertices[i + 2]]);
+        appendBox(bounds.boxes, glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c)));
+    }
+    return bounds;
+}
+
+PrimitiveBounds primitiveBounds(const PackedScene& packed) {
+    if (!packed.spheres64.empty() || !packed.vertexPositions64.empty())
+        return primitiveBounds64(packed);
+    PrimitiveBounds bounds;
+    bounds.sphereCount = std::uint32_t(packed.spheres.size());
+    bounds.boxes.reserve(6 * (packed.spheres.size() + packed.triangleVertices.size() / 3));
+    for (const glm::vec4& sphere : packed.spheres) {
+        glm::dvec3 center(sphere);
+        double magnitude =
+            std::max({std::abs(center.x), std::abs(center.y), std::abs(center.z)}) + sphere.w;
+        double reach = double(sphere.w) + kSphereBoxMargin * magnitude;
+        appendBox(bounds.boxes, glm::vec3(center - reach), glm::vec3(center + reach));
+    }
+    for (std::size_t i = 0; i + 2 < packed.triangleVertices.size(); i += 3) {
+        glm::vec3 a(packed.vertexPositions[packed.triangleVertices[i]]);
+        glm::vec3 b(packed.vertexPositions[packed.triangleVertices[i + 1]]);
+        glm::vec3 c(packed.vertexPositions[packed.triangleVertices[i + 2]]);
+        appendBox(bounds.boxes, glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c)));
+    }
+    return bounds;
+}
+
+void applyLeafOrder(PackedScene& packed, const Bvh& bvh) {
+    if (bvh.sphereOrder.size() != packed.spheres.size() ||
+        bvh.triangleOrder.size() * 3 != packed.triangleVertices.size())
+        throw std::logic_error("applyLeafOrder: the hierarchy was built for another scene");
+    std::vector<glm::vec4> spheres(packed.spheres.size());
+    std::vector<std::uint32_t> sphereMaterials(packed.spheres.size());
+    std::vector<glm::dvec4> spheres64(packed.spheres64.size());
+    for (std::size_t slot = 0; slot < spheres.size(); ++slot) {
+        spheres[slot] = packed.spheres[bvh.sphereOrder[slot]];
+        sphereMaterials[slot] = packed.sphereMaterials[bvh.sphereOrder[slot]];
+        if (!spheres64.empty()) spheres64[slot] = packed.spheres64[bvh.sphereOrder[slot]];
+    }
+    std::vector<std::uint32_t> triangleVertices(packed.triangleVertices.size());
+    for (std::size_t slot = 0; slot < bvh.triangleOrder.size(); ++slot)
+        for (std::size_t k = 0; k < 3; ++k)
+            triangleVertices[3 * slot + k] =
+                packed.triangleVertices[3 * std::size_t(bvh.triangleOrder[slot]) + k];
+    packed.spheres = std::move(spheres);
+    packed.spheres64 = std::move(spheres64);
+    packed.sphereMaterials = std::move(sphereMaterials);
+    packed.triangleVertices = std::move(triangleVertices);
+}
+
+namespace {
+
+struct ArrayView {
+    std::uint32_t binding;
+    const char* name;
+    const void* data;
+    VkDeviceSize bytes;
+};
+
+template <typename T>
+ArrayView view(std::uint32_t binding, const char* name, const std::vector<T>& values) {
+    return {binding, name, values.data(), values.size() * sizeof(T)};
+}
+
+VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
+    return (value + alignment - 1) / alignment * alignment;
+}
+
+} // namespace
+
+GpuScene uploadScene(const Context& context, const PackedScene& packed) {
+    // fp64: the double arrays take the place of the float ones (shaders/precision.glsl).
+    const bool fp64 = !packed.spheres64.empty() || !packed.vertexPositions64.empty();
+    const ArrayView arrays[] = {
+        fp64 ? view(BINDING_SPHERES, "spheres", packed.spheres64)
+             : view(BINDING_SPHERES, "spheres", packed.spheres),
+        view(BINDING_SPHERE_MATERIALS, "sphere materials", packed.sphereMaterials),
+        view(BINDING_TRIANGLES, "triangles", packed.triangleVertices),
+        fp64 ? view(BINDING_VERTEX_POSITIONS, "vertex positions", packed.vertexPositions64)
+             : view(BINDING_VERTEX_POSITIONS, "vertex positions", packed.vertexPositions),
+        view(BINDING_VERTEX_NORMALS, "vertex normals", packed.vertexNormals),
+        view(BINDING_MATERIALS, "materials", packed.materials),
+        view(BINDING_LIGHTS, "lights", packed.lights),
+        view(BINDING_BVH_NODES, "hierarchy nodes", packed.bvhNodes),
+    };
+    // A dvec4 array needs 32-byte alignment.
+    const VkDeviceSize alignment = std::max<VkDeviceSize>(
+        fp64 ? 32 : 16, context.properties.limits.minStorageBufferOffsetAlignment);
+    const VkDeviceSize maxRange = context.properties.limits.maxStorageBufferRange;
+
+    // Lay the arrays out one after another. An empty array still needs a valid
+    // range to bind: all empty ones share one zeroed 16-byte slot at the start.
+    GpuScene scene;
+    VkDeviceSize size = alignment;
+    VkDeviceSize offsets[BINDING_COUNT]{};
+    for (const ArrayView& array : arrays) {
+        if (array.bytes > maxRange)
+            throw std::runtime_error(
+                std::string("the scene's ") + array.name + " take " + std::to_string(array.bytes) +
+                " bytes, more than this device's "
+                "maxStorageBufferRange of " +
+                std::to_string(maxRange) + " bytes (" + context.properties.deviceName + ")");
+        offsets[array.binding] = array.bytes ? size : 0;
+        size = alignUp(size + array.bytes, alignment);
+    }
+    std::vector<std::uint8_t> contents(size, 0);
+    for (const ArrayView& array : arrays) {
+        if (array.bytes)
+            std::memcpy(contents.data() + offsets[array.binding], array.data, array.bytes);
+    }
+    scene.buffer =
+        createDeviceBuffer(context, contents.data(), size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    for (const ArrayView& array : arrays)
+        scene.ranges[array.binding] = {scene.buffer.buffer, offsets[array.binding],
+                                       array.bytes ? array.bytes : 16};
+    scene.bytes = size;
+    scene.sphereCount = static_cast<std::uint32_t>(packed.spheres.size());
+    scene.triangleCount = static_cast<std::uint32_t>(packed.triangleVertices.size() / 3);
+    scene.lightCount = static_cast<std::uint32_t>(packed.lights.size());
+    scene.bvhNodeCount = static_cast<std::uint32_t>(packed.bvhNodes.size());
+    scene.ambient = packed.ambient;
+    return scene;
+}
+
+void destroyGpuScene(const Context& context, GpuScene& scene) {
+    destroyBuffer(context, scene.buffer);
+    scene = GpuScene{};
+}

@@ -1,0 +1,59 @@
+// The trace kernel's compute pipeline and the layout of what it binds.
+#pragma once
+
+#include "gpu/context.h"
+#include "render/kernel_choices.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+// Values for the kernel's specialization constants (SPEC_* in shaders/shared.h). The
+// driver compiles the kernel for them, so a path they switch off costs nothing; on
+// lavapipe a branch on a push constant would still run both sides, masked.
+// The defaults are the general kernel: robust methods, any scene content.
+struct TraceSpecialization {
+    VkBool32 useHierarchy = VK_FALSE; // walk the BVH rather than test every primitive
+    VkBool32 hasSpheres = VK_TRUE;    // the scene holds spheres
+    VkBool32 hasTriangles = VK_TRUE;  // the scene holds triangles
+    std::uint32_t sampler = SAMPLER_R2;        // --sampler
+    VkBool32 stableSphereTest = VK_TRUE;       // --sphere-test stable (else naive)
+    VkBool32 watertightTriangles = VK_TRUE;    // --triangle-test watertight (else mt)
+    VkBool32 scaledRayOffset = VK_TRUE;        // --offset scaled (else fixed)
+    VkBool32 hasMirrors = VK_TRUE;  // some material has ks > 0 and depth > 0: reflection loop
+    VkBool32 hasSpecular = VK_TRUE; // some material has ks > 0: the Phong highlight
+};
+
+// The method choices' part of the specialization (the scene's part is left as given).
+void applyKernelChoices(TraceSpecialization& specialization, const KernelChoices& choices);
+
+// glslang's preamble for a precision: "#define RT_FP64 1" for fp64 (shaders/precision.glsl).
+std::string precisionPreamble(Precision precision);
+
+// The key of the cached SPIR-V: the compiler, its settings, the precision's preamble and
+// every embedded source, so fp32 and fp64 kernels never share a file.
+std::uint64_t traceSourceKey(Precision precision);
+
+struct TracePipeline {
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+};
+
+// Builds the pipeline from SPIR-V of shaders/trace.comp; cache may be VK_NULL_HANDLE.
+TracePipeline createTracePipeline(const Context& context, const std::vector<std::uint32_t>& spirv,
+                                  VkPipelineCache cache = VK_NULL_HANDLE,
+                                  TraceSpecialization specialization = {});
+
+// The trace kernel from the embedded sources, through the on-disk cache in
+// cacheDirectory (host/gpu/pipeline_cache.h): glslang runs only when no SPIR-V is cached
+// for these sources, and the driver is offered its pipeline cache. An empty
+// cacheDirectory compiles everything and writes nothing.
+// The driver's cache is keyed by the SPIR-V and the specialization's bytes.
+TracePipeline loadTracePipeline(const Context& context,
+                                const std::filesystem::path& cacheDirectory,
+                                TraceSpecialization specialization = {},
+                                Precision precision = Precision::Fp32);
+
+void destroyTracePipeline(const Context& context, TracePipeline& pipeline);

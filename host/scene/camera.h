@@ -1,0 +1,61 @@
+// The camera: where it is and where it looks (--camera-pos, --camera-target, --camera-up),
+// its orientation for the kernel, and the window's orbit and fly controls as pure math on
+// input deltas (host/window/input.cpp turns mouse and keys into these calls; no GLFW here).
+#pragma once
+
+#include "scene/scene.h"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <string>
+
+// The default camera by default: the eye at the origin looking down -z, +y up.
+struct CameraPose {
+    glm::dvec3 position{0.0};
+    glm::dvec3 target{0.0, 0.0, -1.0};
+    glm::dvec3 up{0.0, 1.0, 0.0};
+};
+
+// Why a pose has no orientation (target on the eye, up along the view, non-finite), or
+// empty when it is usable.
+std::string cameraPoseProblem(const CameraPose& pose);
+
+// The camera's axes in world space: right (+x), up (+y) and forward (-z in camera space).
+struct CameraBasis {
+    glm::dvec3 right, up, forward;
+};
+CameraBasis cameraBasis(const CameraPose& pose);
+
+// The unit quaternion that rotates camera space into world space: exactly the identity
+// for the default camera, whose rays then stay bit for bit those of
+// docs/model.md.
+glm::dquat cameraOrientation(const CameraPose& pose);
+
+// Orbit around the target, keeping the distance: yaw turns the eye around pose.up, a
+// positive pitch raises it over the target, stopping short of the pole.
+CameraPose orbitCamera(const CameraPose& pose, double yawRadians, double pitchRadians);
+
+// Towards the target (steps > 0, a mouse wheel's clicks) or away, by a fixed factor per
+// step; never reaches or passes the target.
+CameraPose dollyCamera(const CameraPose& pose, double steps);
+
+// Moves eye and target together by move.x along right, move.y along pose.up and move.z
+// along forward (world units).
+CameraPose flyCamera(const CameraPose& pose, glm::dvec3 move);
+
+// Turns the view around the eye (mouse look): yaw around pose.up, a positive pitch looks
+// up, stopping short of looking straight along up. The target keeps its distance.
+CameraPose lookCamera(const CameraPose& pose, double yawRadians, double pitchRadians);
+
+// A sphere around everything in the scene (spheres, triangles; lights ignored), for
+// movement speeds and the orbit pivot. Radius 0 around the origin for an empty scene.
+struct SceneBounds {
+    glm::dvec3 centre{0.0};
+    double radius = 0.0;
+};
+SceneBounds sceneBounds(const Scene& scene);
+
+// The same view, with the target moved along the line of sight to the depth of the
+// scene's centre (at least minimumDistance ahead), so that orbiting turns around the scene.
+CameraPose pivotAtScene(const CameraPose& pose, const SceneBounds& bounds, double minimumDistance);

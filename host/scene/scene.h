@@ -1,0 +1,46 @@
+// The scene as the file states it, in plain CPU structs (scene_loader.h reads them
+// from text). No Vulkan here.
+// Values are kept in double precision so that the CPU reference sees exactly the
+// numbers in the file; the GPU packer rounds them to float.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+struct Material {
+    glm::dvec3 diffuse{0.0};  // kd, "dif:"
+    glm::dvec3 specular{0.0}; // ks, "spe:"; also the mirror weight of the reflection
+    double shininess = 0.0;   // Phong exponent, "shi:"
+};
+
+struct Sphere {
+    glm::dvec3 center{0.0};
+    double radius = 0.0;
+    Material material;
+};
+
+struct Vertex {
+    glm::dvec3 position{0.0};
+    glm::dvec3 normal{0.0}; // as given; may be unnormalised or zero
+    Material material;
+};
+
+struct Triangle {
+    Vertex vertices[3];
+};
+
+struct Light {
+    glm::dvec3 position{0.0};
+    glm::dvec3 color{0.0};
+};
+
+struct Scene {
+    glm::dvec3 ambient{0.0};
+    std::vector<Sphere> spheres;
+    std::vector<Triangle> triangles;
+    std::vector<Light> lights;
+    // Accepted oddities ("file:line: warning: ..."), printed by the caller.
+    std::vector<std::string> warnings;
+};

@@ -1,0 +1,112 @@
+// The window's keys and mouse: each GLFW callback finds the Viewer through the window's
+// user pointer and turns the input into a camera move, a reload, a screenshot request or
+// a vsync toggle. The camera math itself is in camera_controller.cpp (no GLFW there).
+#include "window/input.h"
+
+#include "window/reload.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+namespace {
+
+// Mouse sensitivity (radians per pixel) for orbit and look.
+constexpr double kOrbitPerPixel = 0.01, kLookPerPixel = 0.003;
+
+Viewer& viewerOf(GLFWwindow* window) { return *static_cast<Viewer*>(glfwGetWindowUserPointer(window)); }
+
+// Orbit and dolly turn around a target at the scene's depth rather than the default one
+// unit ahead. Placed on the first such move only, so that the pose of --camera-pos (and
+// of the default camera) is used unchanged, bit for bit, until the user moves.
+void placePivot(Viewer& viewer) {
+    if (viewer.pivotPlaced) return;
+    viewer.pivotPlaced = true;
+    viewer.camera = pivotAtScene(viewer.camera, viewer.bounds, std::max(viewer.bounds.radius, 1.0) * 1e-3);
+}
+
+void toggleVsync(Viewer& viewer) {
+    viewer.vsync = !viewer.vsync;
+    viewer.swapchainStale = true; // the loop recreates it with the new present mode
+}
+
+void onKey(GLFWwindow* window, int key, int, int action, int) {
+    if (action != GLFW_PRESS) return;
+    Viewer& viewer = viewerOf(window);
+    switch (key) {
+    case GLFW_KEY_ESCAPE:
+    case GLFW_KEY_Q: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
+    case GLFW_KEY_R:
+        reloadScene(viewer); // also recompiles the shaders: the renderer is built anew
+        break;
+    case GLFW_KEY_P:
+        viewer.screenshotPending = true;
+        if (refining(viewer))
+            std::fprintf(stderr, "Screenshot: written once all %u samples per pixel are in (%u so far)\n",
+                         viewer.sampleTarget, viewer.samplesDone);
+        break;
+    case GLFW_KEY_V: toggleVsync(viewer); break;
+    case GLFW_KEY_C:
+    case GLFW_KEY_HOME:
+        viewer.pivotPlaced = false;
+        setCamera(viewer, CameraPose{});
+        break;
+    default: break;
+    }
+}
+
+void onMouseButton(GLFWwindow* window, int button, int action, int) {
+    Viewer& viewer = viewerOf(window);
+    glfwGetCursorPos(window, &viewer.cursorX, &viewer.cursorY);
+    if (button == GLFW_MOUSE_BUTTON_LEFT) viewer.leftDrag = action == GLFW_PRESS;
+    if (button == GLFW_MOUSE_BUTTON_RIGHT) viewer.rightDrag = action == GLFW_PRESS;
+}
+
+void onCursor(GLFWwindow* window, double x, double y) {
+    Viewer& viewer = viewerOf(window);
+    const double dx = x - viewer.cursorX, dy = y - viewer.cursorY;
+    viewer.cursorX = x;
+    viewer.cursorY = y;
+    if (viewer.leftDrag) {
+        placePivot(viewer);
+        setCamera(viewer, orbitCamera(viewer.camera, -dx * kOrbitPerPixel, dy * kOrbitPerPixel));
+    } else if (viewer.rightDrag) {
+        setCamera(viewer, lookCamera(viewer.camera, -dx * kLookPerPixel, -dy * kLookPerPixel));
+    }
+}
+
+void onScroll(GLFWwindow* window, double, double steps) {
+    Viewer& viewer = viewerOf(window);
+    placePivot(viewer);
+    setCamera(viewer, dollyCamera(viewer.camera, steps));
+}
+
+void onFramebufferSize(GLFWwindow* window, int, int) { viewerOf(window).resized = true; }
+
+// The window system lost the window's contents (it was exposed): show the image again.
+void onRefresh(GLFWwindow* window) { viewerOf(window).presentNeeded = true; }
+
+} // namespace
+
+void installInputCallbacks(Viewer& viewer) {
+    glfwSetWindowUserPointer(viewer.window, &viewer);
+    glfwSetKeyCallback(viewer.window, onKey);
+    glfwSetMouseButtonCallback(viewer.window, onMouseButton);
+    glfwSetCursorPosCallback(viewer.window, onCursor);
+    glfwSetScrollCallback(viewer.window, onScroll);
+    glfwSetFramebufferSizeCallback(viewer.window, onFramebufferSize);
+    glfwSetWindowRefreshCallback(viewer.window, onRefresh);
+}
+
+bool applyFlyKeys(Viewer& viewer) {
+    const Clock::time_point now = Clock::now();
+    const double seconds = std::min(std::chrono::duration<double>(now - viewer.lastMove).count(), 0.1);
+    viewer.lastMove = now;
+    auto held = [&](int key) { return glfwGetKey(viewer.window, key) == GLFW_PRESS ? 1.0 : 0.0; };
+    const glm::dvec3 direction(held(GLFW_KEY_D) - held(GLFW_KEY_A), held(GLFW_KEY_SPACE) - held(GLFW_KEY_LEFT_SHIFT),
+                               held(GLFW_KEY_W) - held(GLFW_KEY_S));
+    if (direction == glm::dvec3(0.0)) return false;
+    const double speed = std::max(viewer.bounds.radius, 1.0) * 0.5;
+    setCamera(viewer, flyCamera(viewer.camera, direction * (speed * seconds)));
+    return true;
+}

@@ -1,0 +1,12 @@
+// The window's keys and mouse (docs/window.md): GLFW callbacks that turn input
+// into camera moves, reloads, a screenshot request or vsync.
+#pragma once
+
+#include "window/viewer.h"
+
+// Points the window's GLFW callbacks at viewer (also the window's user pointer).
+void installInputCallbacks(Viewer& viewer);
+
+// W/A/S/D, Space and Left Shift held down: fly at a speed that crosses the scene in
+// about four seconds. Returns whether one is held (the loop then keeps polling).
+bool applyFlyKeys(Viewer& viewer);

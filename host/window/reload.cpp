@@ -1,0 +1,62 @@
+// Hot reload: a new renderer for a saved scene file or shader folder (or the R key),
+// swapped in only when it could be built, so that a typo keeps the last good image.
+#include "window/reload.h"
+
+#include "gpu/vk_check.h"
+#include "scene/scene_loader.h"
+
+#include <cstdio>
+#include <exception>
+#include <utility>
+
+namespace {
+
+// A new renderer for scene with the current settings, replacing the old one only when it
+// could be made: a shader that does not compile keeps the last good pipeline.
+bool rebuildRenderer(Viewer& viewer, const Scene& scene) {
+    VK_CHECK(vkDeviceWaitIdle(viewer.context.device));
+    Renderer fresh;
+    try {
+        createRenderer(fresh, viewer.context, scene, viewer.renderer.settings);
+    } catch (const std::exception& error) {
+        destroyRenderer(fresh, viewer.context);
+        std::fprintf(stderr, "%s\nKeeping the last good kernel and scene.\n", error.what());
+        return false;
+    }
+    destroyRenderer(viewer.renderer, viewer.context);
+    viewer.renderer = fresh;
+    viewer.bounds = sceneBounds(scene);
+    restartRefinement(viewer);
+    return true;
+}
+
+void reloadShaders(Viewer& viewer) {
+    if (rebuildRenderer(viewer, viewer.scene))
+        std::fprintf(stderr, "Reloaded the shaders%s%s\n", viewer.options->shaderDirectory.empty() ? "" : " from ",
+                     viewer.options->shaderDirectory.string().c_str());
+}
+
+} // namespace
+
+void reloadScene(Viewer& viewer) {
+    Scene scene;
+    try {
+        scene = loadScene(viewer.options->scenePath);
+    } catch (const SceneError& error) {
+        std::fprintf(stderr, "%s\nKeeping the last good scene.\n", error.what());
+        return;
+    }
+    for (const std::string& warning : scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
+    if (rebuildRenderer(viewer, scene)) {
+        viewer.scene = std::move(scene);
+        std::fprintf(stderr, "Reloaded %s\n", viewer.options->scenePath.string().c_str());
+    }
+}
+
+void pollWatchedFiles(Viewer& viewer) {
+    const Clock::time_point now = Clock::now();
+    if (std::chrono::duration<double>(now - viewer.lastWatch).count() < kWatchInterval) return;
+    viewer.lastWatch = now;
+    if (pathChanged(viewer.sceneWatch)) reloadScene(viewer);
+    else if (!viewer.shaderWatch.path.empty() && pathChanged(viewer.shaderWatch)) reloadShaders(viewer);
+}

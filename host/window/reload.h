@@ -1,0 +1,16 @@
+// Hot reload: the scene file and --shader-dir are watched; a save (or the R key) builds
+// the renderer anew, and a scene or shader that fails keeps the last good one on screen.
+#pragma once
+
+#include "window/viewer.h"
+
+// How often the scene file and --shader-dir are checked for a save (seconds); also how
+// long an idle window sleeps between looks.
+constexpr double kWatchInterval = 0.25;
+
+// Loads the scene file again and recompiles the shaders with it; a parse or compile error
+// is printed and the last good scene and kernel stay.
+void reloadScene(Viewer& viewer);
+
+// At most every kWatchInterval: reloads what was saved since the last look.
+void pollWatchedFiles(Viewer& viewer);

@@ -1,0 +1,88 @@
+// The interactive window's state, shared by the files that make it up: window.cpp (open,
+// frame loop, close), window_input.cpp (keys and mouse), window_present.cpp (trace, blit,
+// present), window_reload.cpp (hot reload) and window_capture.cpp (screenshot, bench).
+// Internal to the window: nothing outside those files includes it.
+#pragma once
+
+#include "scene/camera.h"
+#include "gpu/context.h"
+#include "base/file_watch.h"
+#include "cli/options.h"
+#include "render/renderer.h"
+#include "scene/scene.h"
+#include "window/swapchain.h"
+
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+
+using Clock = std::chrono::steady_clock;
+
+// Enough for a blit-only present to be recorded while the previous one still runs.
+constexpr std::uint32_t kFramesInFlight = 2;
+
+struct Frame {
+    VkCommandBuffer commands = VK_NULL_HANDLE;
+    VkSemaphore imageAvailable = VK_NULL_HANDLE; // signalled by acquire, waited on by the submit
+    VkFence done = VK_NULL_HANDLE;               // the submit finished; created signalled
+};
+
+struct Viewer {
+    const Options* options = nullptr;
+    GLFWwindow* window = nullptr;
+    Context context;
+    VkSurfaceKHR surface = VK_NULL_HANDLE;
+    Renderer renderer;
+    Swapchain swapchain;
+    Frame frames[kFramesInFlight];
+    std::uint32_t frameIndex = 0;
+    std::string sceneName; // the title's first part
+    Scene scene;           // the last scene that loaded, for shader reloads
+
+    // Progressive refinement: samples 0..samplesDone-1 of sampleTarget are in the sum.
+    std::uint32_t sampleTarget = 1;
+    std::uint32_t samplesDone = 0;
+    std::uint32_t samplesPerFrame = 1;
+    double lastFrameMs = 0.0;
+    Clock::time_point refineStart = Clock::now();
+
+    CameraPose camera;
+    bool pivotPlaced = false; // the orbit target sits at the scene's depth (see pivotAtScene)
+    SceneBounds bounds;
+    bool leftDrag = false, rightDrag = false;
+    double cursorX = 0.0, cursorY = 0.0;
+    Clock::time_point lastMove = Clock::now();
+
+    FileWatch sceneWatch, shaderWatch;
+    Clock::time_point lastWatch = Clock::now();
+
+    bool resized = false;        // the framebuffer changed size: new swapchain, maybe a new trace
+    bool swapchainStale = true;  // no usable swapchain yet, or OUT_OF_DATE/SUBOPTIMAL was reported
+    bool presentNeeded = true;   // the window does not show the output image
+    bool vsync = true;
+    bool screenshotPending = false; // P: write it once refinement is done
+    bool continuous = false;        // --redraw-continuously: restart the sum every frame (soak test)
+
+    // --bench-window N: frames timed after the first.
+    std::uint32_t benchFrames = 0, benchCounted = 0;
+    std::uint64_t benchSamples = 0;
+    Clock::time_point benchStart;
+};
+
+inline bool refining(const Viewer& viewer) { return viewer.samplesDone < viewer.sampleTarget; }
+
+// Something the image depends on changed: the sum starts again.
+inline void restartRefinement(Viewer& viewer) {
+    if (viewer.samplesDone != 0) viewer.refineStart = Clock::now();
+    viewer.samplesDone = 0;
+    viewer.samplesPerFrame = 1; // the first frame after a change comes quickly
+}
+
+inline void setCamera(Viewer& viewer, const CameraPose& camera) {
+    viewer.camera = camera;
+    setCamera(viewer.renderer, camera);
+    restartRefinement(viewer);
+}
