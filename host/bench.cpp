@@ -112,9 +112,10 @@ std::string runBenchmark(const Context& context, const Renderer& renderer, Headl
          << ", \"triangles\": " << renderer.scene.triangleCount
          << ", \"lights\": " << renderer.scene.lightCount
          << ", \"sampler\": " << jsonString(choiceName(samplerNames(), settings.kernel.sampler))
-         << ", \"seed\": " << settings.kernel.seed
-         << ", \"precision\": " << jsonString(choiceName(precisionNames(), settings.kernel.precision))
-         << ", \"sphere_test\": " << jsonString(choiceName(sphereTestNames(), settings.kernel.sphereTest))
+         << ", \"seed\": " << settings.kernel.seed << ", \"precision\": "
+         << jsonString(choiceName(precisionNames(), settings.kernel.precision))
+         << ", \"sphere_test\": "
+         << jsonString(choiceName(sphereTestNames(), settings.kernel.sphereTest))
          << ", \"triangle_test\": "
          << jsonString(choiceName(triangleTestNames(), settings.kernel.triangleTest))
          << ", \"offset\": " << jsonString(choiceName(rayOffsetNames(), settings.kernel.offset))

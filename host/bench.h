@@ -1,8 +1,8 @@
 // --bench N: timed headless frames after a warm-up, reported as one JSON line.
 #pragma once
 
-#include "render/headless.h"
 #include "cli/options.h"
+#include "render/headless.h"
 
 #include <chrono>
 #include <string>
@@ -20,8 +20,8 @@ struct StartupTimes {
 };
 
 // Renders warm-up frames, then options.benchFrames timed ones, and returns the
-// JSON object of docs/performance.md ("--bench") with parse_ms, per-frame submissions, the process's
-// CPU time per timed frame (cpu_ms_per_frame: the trace's cost on a CPU driver, robust to
+// JSON object of docs/performance.md ("--bench") with parse_ms, per-frame submissions, the
+// process's CPU time per timed frame (cpu_ms_per_frame: the trace's cost on a CPU driver, robust to
 // other load) and the kernel choices added.
 std::string runBenchmark(const Context& context, const Renderer& renderer, HeadlessTarget& target,
                          const Options& options, const StartupTimes& startup);

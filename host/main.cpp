@@ -1,16 +1,16 @@
 // Raytracer: arguments to a mode (help, headless PNG, benchmark, window), inside
 // one try/catch that turns every failure into a message and an exit status.
 #include "bench.h"
-#include "render/headless.h"
-#include "gpu/image_limits.h"
-#include "render/interrupt.h"
 #include "cli/options.h"
 #include "cli/render_settings.h"
-#include "scene/scene_loader.h"
+#include "gpu/image_limits.h"
 #include "gpu/shader_compiler.h"
 #include "gpu/vk_check.h"
-#include "window/window.h"
+#include "render/headless.h"
+#include "render/interrupt.h"
 #include "render/kernel_sources.h"
+#include "scene/scene_loader.h"
+#include "window/window.h"
 
 #include <chrono>
 #include <cstdio>
@@ -75,14 +75,17 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
     if (!options.dumpShadersTo.empty()) {
         writeEmbeddedShaders(options.dumpShadersTo);
         std::cerr << "Wrote the shader sources to " << options.dumpShadersTo.string()
-                  << "; edit them there and run with --shader-dir " << options.dumpShadersTo.string() << '\n';
+                  << "; edit them there and run with --shader-dir "
+                  << options.dumpShadersTo.string() << '\n';
         if (options.scenePath.empty()) return kSuccess;
     }
     const auto parseStart = std::chrono::steady_clock::now();
     Scene scene = loadScene(options.scenePath);
     startup.parseMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - parseStart).count();
-    for (const std::string& warning : scene.warnings) std::cerr << warning << '\n';
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - parseStart)
+            .count();
+    for (const std::string& warning : scene.warnings)
+        std::cerr << warning << '\n';
 
     bool headless = !options.outputPath.empty() || options.benchFrames > 0;
     if (!headless && !runWindow(options, scene)) {
@@ -90,16 +93,19 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
             throw std::runtime_error("--window was given, but no window can be opened: " +
                                      windowUnavailableReason());
         if (options.benchWindowFrames > 0)
-            throw std::runtime_error("--bench-window needs a display: " + windowUnavailableReason());
+            throw std::runtime_error("--bench-window needs a display: " +
+                                     windowUnavailableReason());
         options.outputPath = options.scenePath.stem().string() + ".png";
         std::cerr << "No display: rendering headless to " << options.outputPath.string() << '\n';
         headless = true;
     }
     if (headless) runHeadless(options, scene, startup);
-    if (headless && options.benchFrames == 0) std::cerr << "Wrote " << options.outputPath.string() << '\n';
+    if (headless && options.benchFrames == 0)
+        std::cerr << "Wrote " << options.outputPath.string() << '\n';
 
     if (options.validate && validationMessageCount() > 0) {
-        std::cerr << "error: the validation layer printed " << validationMessageCount() << " message(s)\n";
+        std::cerr << "error: the validation layer printed " << validationMessageCount()
+                  << " message(s)\n";
         return kValidationFailure;
     }
     return kSuccess;

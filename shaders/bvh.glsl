@@ -64,7 +64,9 @@ double nextRealUp(double t) {
     return packDouble2x32(uvec2(bits.x, bits.y + carry));
 }
 #else
-float nextRealUp(float t) { return uintBitsToFloat(floatBitsToUint(t) + 1u); }
+float nextRealUp(float t) {
+    return uintBitsToFloat(floatBitsToUint(t) + 1u);
+}
 #endif
 
 // The primitives of one leaf against the ray, from its child reference: the first primitive
@@ -82,7 +84,8 @@ bool intersectLeaf(Ray ray, ShearedRay sheared, uint first, uint count, bool any
         for (uint i = first; i < end; ++i) {
             if (!intersectSphere(ray, spheres[i], limit, t)) continue;
             if (anyHitMode) return true;
-            if (t < hit.t || hit.kind == HIT_TRIANGLE || (hit.kind == HIT_SPHERE && i < hit.index)) {
+            if (t < hit.t || hit.kind == HIT_TRIANGLE ||
+                (hit.kind == HIT_SPHERE && i < hit.index)) {
                 hit = Hit(t, HIT_SPHERE, i, rvec3(0.0));
                 limit = nextRealUp(t);
             }

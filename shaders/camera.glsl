@@ -1,4 +1,5 @@
-// Primary rays (the pinhole camera of docs/model.md); sample positions inside a pixel: sampling.glsl.
+// Primary rays (the pinhole camera of docs/model.md); sample positions inside a pixel:
+// sampling.glsl.
 //
 //            +y
 //             ^        image plane z = -1, eye at the origin looking down -z
@@ -31,6 +32,7 @@ Ray cameraRay(uvec2 pixel, vec2 uv) {
     vec2 size = vec2(params.image.xy);
     vec2 ndc = vec2(2.0 * (float(pixel.x) + uv.x) / size.x - 1.0,
                     1.0 - 2.0 * (float(pixel.y) + uv.y) / size.y);
-    vec3 direction = rotateByQuaternion(params.cameraOrientation, vec3(ndc * params.camera.xy, -1.0));
+    vec3 direction =
+        rotateByQuaternion(params.cameraOrientation, vec3(ndc * params.camera.xy, -1.0));
     return Ray(params.cameraOrigin.xyz, normalize(direction));
 }

@@ -94,8 +94,8 @@ ShearedRay shearRay(Ray ray) {
 // of exactly 0 is left out: a 0 counts as inside for both neighbours, which still leaves
 // no crack. Degenerate triangles (det == 0 or a zero cross product) are never hit.
 // Returns t in (0, tMax) and the barycentric weights of vertices a, b, c.
-bool intersectTriangleWatertight(ShearedRay ray, rvec3 a, rvec3 b, rvec3 c, real tMax,
-                                 out real t, out rvec3 barycentric) {
+bool intersectTriangleWatertight(ShearedRay ray, rvec3 a, rvec3 b, rvec3 c, real tMax, out real t,
+                                 out rvec3 barycentric) {
     uint kx = ray.axes.x, ky = ray.axes.y, kz = ray.axes.z;
     precise rvec3 A = a - ray.origin;
     precise rvec3 B = b - ray.origin;
@@ -128,8 +128,8 @@ bool intersectTriangleWatertight(ShearedRay ray, rvec3 a, rvec3 b, rvec3 c, real
 // paper's epsilon of 1e-6 would reject every triangle of a scene scaled small), so what
 // it differs in from the watertight test is watertightness itself. A zero-area triangle
 // is never hit, as the model of docs/model.md asks.
-bool intersectTriangleMollerTrumbore(Ray ray, rvec3 a, rvec3 b, rvec3 c, real tMax,
-                                     out real t, out rvec3 barycentric) {
+bool intersectTriangleMollerTrumbore(Ray ray, rvec3 a, rvec3 b, rvec3 c, real tMax, out real t,
+                                     out rvec3 barycentric) {
     rvec3 edge1 = b - a, edge2 = c - a;
     rvec3 p = cross(ray.direction, edge2);
     real det = dot(edge1, p);

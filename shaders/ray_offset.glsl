@@ -36,7 +36,8 @@ double ulpOf(double m) {
     return packDouble2x32(uvec2(0u, unpackDouble2x32(m).y & 0x7ff00000u)) * 2.220446049250313e-16LF;
 }
 dvec3 ulpSteps(dvec3 magnitude, dvec3 n) {
-    return trunc(OFFSET_INT_SCALE * n) * dvec3(ulpOf(magnitude.x), ulpOf(magnitude.y), ulpOf(magnitude.z));
+    return trunc(OFFSET_INT_SCALE * n) *
+           dvec3(ulpOf(magnitude.x), ulpOf(magnitude.y), ulpOf(magnitude.z));
 }
 #else
 vec3 ulpSteps(vec3 magnitude, vec3 n) {

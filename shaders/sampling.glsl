@@ -23,14 +23,19 @@ uint hashUint(uint x) {
 // is at most sqrt(n), so every cell has the same area (a prime n gives 1 x n strips).
 uvec2 stratumGrid(uint n) {
     uint rows = uint(sqrt(float(n)));
-    while (rows * rows > n) rows--;
-    while ((rows + 1u) * (rows + 1u) <= n) rows++;
-    while (n % rows != 0u) rows--;
+    while (rows * rows > n)
+        rows--;
+    while ((rows + 1u) * (rows + 1u) <= n)
+        rows++;
+    while (n % rows != 0u)
+        rows--;
     return uvec2(n / rows, rows); // (columns, rows)
 }
 
 // 32-bit fractions in [0, 1) as floats: the top 24 bits, so the result stays below 1.
-vec2 unitFromBits(uvec2 bits) { return vec2(bits >> 8u) * (1.0 / 16777216.0); }
+vec2 unitFromBits(uvec2 bits) {
+    return vec2(bits >> 8u) * (1.0 / 16777216.0);
+}
 
 // R2's two generators 1/g and 1/g^2 (g = 1.3247179572..., the plastic number) as 32-bit
 // fixed-point fractions: point s is s * alpha mod 1, computed exactly in integers (a float
@@ -51,6 +56,6 @@ vec2 sampleOffset(uvec2 pixel, uint s, uint n) {
     uint h1 = hashUint(hashUint(hashUint(pixel.x) ^ pixel.y) ^ s);
     if (seed != 0u) h1 = hashUint(h1 ^ hashUint(seed)); // seed 0: the jitter of earlier versions
     uint h2 = hashUint(h1);
-    vec2 jitter = vec2(h1 >> 8, h2 >> 8) * (1.0 / 16777216.0); // 24 bits, in [0, 1)
+    vec2 jitter = vec2(h1 >> 8, h2 >> 8) * (1.0 / 16777216.0);        // 24 bits, in [0, 1)
     return min((vec2(cell) + jitter) / vec2(grid), vec2(0.99999994)); // rounding may reach 1
 }

@@ -1,5 +1,6 @@
 // Surface data at a hit and Phong shading with hard shadows, as docs/model.md defines them.
-// Needs: Ray, Hit (camera.glsl, intersect.glsl), anyHit (bvh.glsl), offsetRayOrigin (ray_offset.glsl).
+// Needs: Ray, Hit (camera.glsl, intersect.glsl), anyHit (bvh.glsl), offsetRayOrigin
+// (ray_offset.glsl).
 
 // Everything shading needs about a hit point.
 struct SurfacePoint {
@@ -7,9 +8,9 @@ struct SurfacePoint {
     rvec3 magnitude;       // per coordinate, sum of |terms| that position was computed from
     rvec3 geometricNormal; // unit, either side: the side a new ray leaves on picks the sign
     rvec3 normal;          // unit shading normal, flipped to face the incoming ray
-    vec3 kd;              // diffuse colour
-    vec3 ks;              // specular colour, also the mirror weight
-    float shininess;      // Phong exponent
+    vec3 kd;               // diffuse colour
+    vec3 ks;               // specular colour, also the mirror weight
+    float shininess;       // Phong exponent
 };
 
 // v scaled to unit length, or fallback when v is zero (normalize(0) is NaN on lavapipe);
@@ -27,9 +28,13 @@ vec3 vertexNormal(uint v) {
 // The material of vertex v: its index rides in the position's w, as the float's bits (fp32)
 // or as a double's exact integer value (fp64).
 #ifdef RT_FP64
-GpuMaterial vertexMaterial(uint v) { return materials[uint(vertexPositions[v].w)]; }
+GpuMaterial vertexMaterial(uint v) {
+    return materials[uint(vertexPositions[v].w)];
+}
 #else
-GpuMaterial vertexMaterial(uint v) { return materials[floatBitsToUint(vertexPositions[v].w)]; }
+GpuMaterial vertexMaterial(uint v) {
+    return materials[floatBitsToUint(vertexPositions[v].w)];
+}
 #endif
 
 // Position, normals and material at a hit. Sphere: N = (P - C) / r, with P projected back
@@ -53,7 +58,8 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
         uvec3 v = uvec3(triangleVertices[3u * hit.index], triangleVertices[3u * hit.index + 1u],
                         triangleVertices[3u * hit.index + 2u]);
         rvec3 w = hit.barycentric;
-        rvec3 a = vertexPositions[v.x].xyz, b = vertexPositions[v.y].xyz, c = vertexPositions[v.z].xyz;
+        rvec3 a = vertexPositions[v.x].xyz, b = vertexPositions[v.y].xyz,
+              c = vertexPositions[v.z].xyz;
         // From the barycentrics rather than o + t d: its error scales with the vertices only.
         s.position = w.x * a + w.y * b + w.z * c;
         s.magnitude = w.x * abs(a) + w.y * abs(b) + w.z * abs(c);
@@ -64,8 +70,8 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
         GpuMaterial mb = vertexMaterial(v.y);
         GpuMaterial mc = vertexMaterial(v.z);
         vec3 wf = vec3(w); // colours stay float
-        vec4 kdShininess = wf.x * ma.diffuseShininess + wf.y * mb.diffuseShininess +
-                           wf.z * mc.diffuseShininess;
+        vec4 kdShininess =
+            wf.x * ma.diffuseShininess + wf.y * mb.diffuseShininess + wf.z * mc.diffuseShininess;
         s.kd = kdShininess.xyz;
         s.shininess = kdShininess.w;
         s.ks = wf.x * ma.specular.xyz + wf.y * mb.specular.xyz + wf.z * mc.specular.xyz;

@@ -34,25 +34,27 @@ using uint = std::uint32_t;
 #define BINDING_SPHERES 1          // vec4 per sphere: centre xyz, radius w
 #define BINDING_SPHERE_MATERIALS 2 // uint per sphere: index into materials
 #define BINDING_TRIANGLES 3        // 3 uint per triangle: indices into the vertex arrays
-#define BINDING_VERTEX_POSITIONS 4 // vec4 per vertex: position xyz, w: its material index (uint bits)
-#define BINDING_VERTEX_NORMALS 5   // 3 floats per vertex: normal xyz as given, tightly packed
-#define BINDING_MATERIALS 6        // GpuMaterial per distinct material
-#define BINDING_LIGHTS 7           // GpuLight per light
-#define BINDING_BVH_NODES 8        // GpuBvhNode per hierarchy node, depth first (host/render/bvh.h)
-#define BINDING_ACCUMULATION 9     // vec4 per pixel, row major: the window's running sum of samples
+#define BINDING_VERTEX_POSITIONS                                                                   \
+    4                            // vec4 per vertex: position xyz, w: its material index (uint bits)
+#define BINDING_VERTEX_NORMALS 5 // 3 floats per vertex: normal xyz as given, tightly packed
+#define BINDING_MATERIALS 6      // GpuMaterial per distinct material
+#define BINDING_LIGHTS 7         // GpuLight per light
+#define BINDING_BVH_NODES 8      // GpuBvhNode per hierarchy node, depth first (host/render/bvh.h)
+#define BINDING_ACCUMULATION 9   // vec4 per pixel, row major: the window's running sum of samples
 #define BINDING_COUNT 10
 
-// Specialization constant ids (host/render/trace_pipeline.h, TraceSpecialization): bool unless marked uint.
+// Specialization constant ids (host/render/trace_pipeline.h, TraceSpecialization): bool unless
+// marked uint.
 #define SPEC_USE_HIERARCHY 0 // walk the BVH (else test every primitive: scenes too small for one)
 #define SPEC_HAS_SPHERES 1   // the scene holds spheres (else their code is compiled out)
 #define SPEC_HAS_TRIANGLES 2 // the scene holds triangles (likewise)
 // The method choices of the command line (host/render/kernel_choices.h), and more of the scene.
-#define SPEC_SAMPLER 3             // uint, SAMPLER_*: sample positions inside a pixel (--sampler)
-#define SPEC_STABLE_SPHERE_TEST 4  // bool: Ray Tracing Gems ch. 7, else the textbook quadratic
+#define SPEC_SAMPLER 3              // uint, SAMPLER_*: sample positions inside a pixel (--sampler)
+#define SPEC_STABLE_SPHERE_TEST 4   // bool: Ray Tracing Gems ch. 7, else the textbook quadratic
 #define SPEC_WATERTIGHT_TRIANGLES 5 // bool: Woop et al. 2013, else Moller-Trumbore
-#define SPEC_SCALED_RAY_OFFSET 6   // bool: Waechter-Binder, scale-relative; else a fixed 1e-4
-#define SPEC_HAS_MIRRORS 7         // bool: some material has ks > 0 and --depth > 0
-#define SPEC_HAS_SPECULAR 8        // bool: some material has ks > 0 (else no Phong highlight)
+#define SPEC_SCALED_RAY_OFFSET 6    // bool: Waechter-Binder, scale-relative; else a fixed 1e-4
+#define SPEC_HAS_MIRRORS 7          // bool: some material has ks > 0 and --depth > 0
+#define SPEC_HAS_SPECULAR 8         // bool: some material has ks > 0 (else no Phong highlight)
 #define SAMPLER_GRID 0u
 #define SAMPLER_STRATIFIED 1u
 #define SAMPLER_R2 2u
@@ -103,13 +105,15 @@ struct GpuBvhNode {
 
 // Per-dispatch parameters, passed as push constants (at most 128 bytes).
 struct GpuFrameParams {
-    vec4 background; // rgb colour of rays that hit nothing, w unused
-    vec4 ambient;    // rgb ambient light added once per shading point, w unused
-    vec4 camera;     // x: aspect * tan(fov/2), y: tan(fov/2), zw unused
+    vec4 background;        // rgb colour of rays that hit nothing, w unused
+    vec4 ambient;           // rgb ambient light added once per shading point, w unused
+    vec4 camera;            // x: aspect * tan(fov/2), y: tan(fov/2), zw unused
     vec4 cameraOrigin;      // the eye in world space: xyz, w unused (0 for the default camera)
-    vec4 cameraOrientation; // unit quaternion xyzw, camera space to world (0,0,0,1 for the default camera)
-    uvec4 image;     // x: width, y: height, z: samples per pixel n (sampleOffset's n), w: reflection depth
-    uvec4 counts;    // x: spheres, y: triangles, z: lights, w: sampling seed (--seed)
+    vec4 cameraOrientation; // unit quaternion xyzw, camera space to world (0,0,0,1 for the default
+                            // camera)
+    uvec4 image;  // x: width, y: height, z: samples per pixel n (sampleOffset's n), w: reflection
+                  // depth
+    uvec4 counts; // x: spheres, y: triangles, z: lights, w: sampling seed (--seed)
     // xy: first pixel of this dispatch. zw: the samples it adds: z the index of the first,
     // w how many; w == 0 traces all image.z samples in one pass (headless). With w > 0
     // (the window's progressive view) the sum of samples 0..z-1 is read from and the sum

@@ -43,26 +43,44 @@ layout(set = 0, binding = BINDING_OUTPUT_IMAGE, rgba8) uniform writeonly image2D
 // Scene arrays. Their lengths are params.counts, never .length(): an empty array is bound
 // to a small dummy buffer.
 // Spheres: centre in xyz, radius in w (doubles in fp64, see precision.glsl).
-layout(set = 0, binding = BINDING_SPHERES, std430) readonly buffer SphereBuffer { rvec4 spheres[]; };
+layout(set = 0, binding = BINDING_SPHERES, std430) readonly buffer SphereBuffer {
+    rvec4 spheres[];
+};
 // Per sphere, the index of its material in materials[].
-layout(set = 0, binding = BINDING_SPHERE_MATERIALS, std430) readonly buffer SphereMaterialBuffer { uint sphereMaterials[]; };
+layout(set = 0, binding = BINDING_SPHERE_MATERIALS, std430) readonly buffer SphereMaterialBuffer {
+    uint sphereMaterials[];
+};
 // Per triangle, three consecutive indices into the vertex arrays.
-layout(set = 0, binding = BINDING_TRIANGLES, std430) readonly buffer TriangleBuffer { uint triangleVertices[]; };
+layout(set = 0, binding = BINDING_TRIANGLES, std430) readonly buffer TriangleBuffer {
+    uint triangleVertices[];
+};
 // Per vertex, its position in xyz and the index of its material in materials[] in w: the
 // float's bits, or in fp64 a double holding the index (shade.glsl, vertexMaterial).
-layout(set = 0, binding = BINDING_VERTEX_POSITIONS, std430) readonly buffer PositionBuffer { rvec4 vertexPositions[]; };
+layout(set = 0, binding = BINDING_VERTEX_POSITIONS, std430) readonly buffer PositionBuffer {
+    rvec4 vertexPositions[];
+};
 // Per vertex, its normal as the scene file gives it (maybe unnormalised or zero): three
 // floats, no padding (a vec4 would waste a quarter; see vertexNormal in shade.glsl).
-layout(set = 0, binding = BINDING_VERTEX_NORMALS, std430) readonly buffer NormalBuffer { float vertexNormals[]; };
+layout(set = 0, binding = BINDING_VERTEX_NORMALS, std430) readonly buffer NormalBuffer {
+    float vertexNormals[];
+};
 // The distinct materials of the scene.
-layout(set = 0, binding = BINDING_MATERIALS, std430) readonly buffer MaterialBuffer { GpuMaterial materials[]; };
+layout(set = 0, binding = BINDING_MATERIALS, std430) readonly buffer MaterialBuffer {
+    GpuMaterial materials[];
+};
 // The point lights.
-layout(set = 0, binding = BINDING_LIGHTS, std430) readonly buffer LightBuffer { GpuLight lights[]; };
+layout(set = 0, binding = BINDING_LIGHTS, std430) readonly buffer LightBuffer {
+    GpuLight lights[];
+};
 // The hierarchy over spheres and triangles, depth first (bound only when useHierarchy is 1).
-layout(set = 0, binding = BINDING_BVH_NODES, std430) readonly buffer BvhNodeBuffer { GpuBvhNode bvhNodes[]; };
+layout(set = 0, binding = BINDING_BVH_NODES, std430) readonly buffer BvhNodeBuffer {
+    GpuBvhNode bvhNodes[];
+};
 // The window's running sum of each pixel's samples (see GpuFrameParams.dispatch); a dummy
 // when tracing in one pass.
-layout(set = 0, binding = BINDING_ACCUMULATION, std430) buffer AccumulationBuffer { vec4 accumulation[]; };
+layout(set = 0, binding = BINDING_ACCUMULATION, std430) buffer AccumulationBuffer {
+    vec4 accumulation[];
+};
 
 #include "camera.glsl"
 #include "sampling.glsl"
@@ -106,7 +124,8 @@ uvec2 pixelInTile(uvec2 local) {
 }
 
 void main() {
-    uvec2 pixel = params.dispatch.xy + gl_WorkGroupID.xy * uvec2(WORKGROUP_SIZE_X, WORKGROUP_SIZE_Y) +
+    uvec2 pixel = params.dispatch.xy +
+                  gl_WorkGroupID.xy * uvec2(WORKGROUP_SIZE_X, WORKGROUP_SIZE_Y) +
                   pixelInTile(gl_LocalInvocationID.xy);
     if (any(greaterThanEqual(pixel, params.image.xy))) return;
 

@@ -17,7 +17,9 @@ void expectNear(glm::dvec3 actual, glm::dvec3 expected, double tolerance = kTigh
     EXPECT_NEAR(actual.z, expected.z, tolerance);
 }
 
-glm::dvec3 rotate(const glm::dquat& q, glm::dvec3 v) { return q * v; }
+glm::dvec3 rotate(const glm::dquat& q, glm::dvec3 v) {
+    return q * v;
+}
 
 TEST(CameraOrientation, SpecCameraIsExactlyTheIdentity) {
     const glm::dquat q = cameraOrientation(CameraPose{});
@@ -44,7 +46,8 @@ TEST(CameraOrientation, MapsCameraAxesOntoTheBasis) {
     expectNear(rotate(q, {0, 0, -1}), glm::normalize(pose.target - pose.position));
     expectNear(rotate(q, {1, 0, 0}), basis.right);
     expectNear(rotate(q, {0, 1, 0}), basis.up);
-    EXPECT_NEAR(glm::dot(basis.up, glm::normalize(pose.up)) > 0 ? 1.0 : -1.0, 1.0, 0.0); // up stays up
+    EXPECT_NEAR(glm::dot(basis.up, glm::normalize(pose.up)) > 0 ? 1.0 : -1.0, 1.0,
+                0.0); // up stays up
     EXPECT_NEAR(glm::length(q), 1.0, kTight);
 }
 
@@ -56,11 +59,15 @@ TEST(CameraOrientation, LookingAlongPlusXTurnsMinusZOntoPlusX) {
 
 TEST(CameraPose, ProblemsAreNamed) {
     EXPECT_EQ(cameraPoseProblem(CameraPose{}), "");
-    EXPECT_NE(cameraPoseProblem(CameraPose{{1, 1, 1}, {1, 1, 1}, {0, 1, 0}}).find("target must differ"),
+    EXPECT_NE(
+        cameraPoseProblem(CameraPose{{1, 1, 1}, {1, 1, 1}, {0, 1, 0}}).find("target must differ"),
+        std::string::npos);
+    EXPECT_NE(cameraPoseProblem(CameraPose{{0, 0, 0}, {0, 3, 0}, {0, 1, 0}}).find("parallel"),
               std::string::npos);
-    EXPECT_NE(cameraPoseProblem(CameraPose{{0, 0, 0}, {0, 3, 0}, {0, 1, 0}}).find("parallel"), std::string::npos);
-    EXPECT_NE(cameraPoseProblem(CameraPose{{0, 0, 0}, {0, 0, -1}, {0, 0, 0}}).find("zero"), std::string::npos);
-    EXPECT_NE(cameraPoseProblem(CameraPose{{NAN, 0, 0}, {0, 0, -1}, {0, 1, 0}}).find("finite"), std::string::npos);
+    EXPECT_NE(cameraPoseProblem(CameraPose{{0, 0, 0}, {0, 0, -1}, {0, 0, 0}}).find("zero"),
+              std::string::npos);
+    EXPECT_NE(cameraPoseProblem(CameraPose{{NAN, 0, 0}, {0, 0, -1}, {0, 1, 0}}).find("finite"),
+              std::string::npos);
 }
 
 TEST(Orbit, KeepsTheDistanceAndTheTarget) {
@@ -76,7 +83,8 @@ TEST(Orbit, KeepsTheDistanceAndTheTarget) {
 TEST(Orbit, AFullTurnOfYawComesBack) {
     CameraPose pose{{2, 1, 5}, {0, 0, -2}, {0, 1, 0}};
     CameraPose moved = pose;
-    for (int k = 0; k < 8; ++k) moved = orbitCamera(moved, M_PI / 4, 0.0);
+    for (int k = 0; k < 8; ++k)
+        moved = orbitCamera(moved, M_PI / 4, 0.0);
     expectNear(moved.position, pose.position, 1e-9);
 }
 
@@ -146,10 +154,12 @@ TEST(SceneBounds, CoverSpheresAndTriangles) {
 TEST(SceneBounds, PivotKeepsTheLineOfSight) {
     CameraPose pose{{1, 1, 1}, {2, 1, 0}, {0, 1, 0}};
     CameraPose pivoted = pivotAtScene(pose, {{10, 1, -8}, 3}, 0.01);
-    expectNear(glm::normalize(pivoted.target - pivoted.position), glm::normalize(pose.target - pose.position));
+    expectNear(glm::normalize(pivoted.target - pivoted.position),
+               glm::normalize(pose.target - pose.position));
     EXPECT_NEAR(glm::length(pivoted.target - pivoted.position), 9.0 * std::sqrt(2.0), 1e-9);
     // A scene behind the eye leaves the pivot at the minimum distance ahead.
-    EXPECT_NEAR(glm::length(pivotAtScene(pose, {{-10, 1, 10}, 1}, 0.5).target - pose.position), 0.5, kTight);
+    EXPECT_NEAR(glm::length(pivotAtScene(pose, {{-10, 1, 10}, 1}, 0.5).target - pose.position), 0.5,
+                kTight);
 }
 
 } // namespace

@@ -1,15 +1,15 @@
 // The camera options end to end: a moved camera (--camera-pos/-target/-up) renders what
 // the double-precision reference sees from there, the default camera given explicitly is
 // the default image byte for byte, and impossible cameras are usage errors.
-#include "test_support.h"
 #include "scene/scene_loader.h"
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 
 namespace {
 
 constexpr int kWidth = 160, kHeight = 120;
-constexpr int kTolerance = 2;            // as the conformance tests
+constexpr int kTolerance = 2;           // as the conformance tests
 constexpr double kMinimumMatch = 0.995; // edges may fall either side in fp32 vs fp64
 
 struct MovedCamera {
@@ -19,12 +19,14 @@ struct MovedCamera {
 
 // Readable test names and failure messages instead of gtest's byte dump.
 void PrintTo(const MovedCamera& camera, std::ostream* out) {
-    *out << camera.scene << " from " << camera.position << " at " << camera.target << " up " << camera.up;
+    *out << camera.scene << " from " << camera.position << " at " << camera.target << " up "
+         << camera.up;
 }
 
 std::filesystem::path findScene(const std::string& name) {
     for (const char* dir : {PROJECT_SCENES_DIR, SHARED_SCENES_DIR})
-        if (std::filesystem::exists(std::filesystem::path(dir) / name)) return std::filesystem::path(dir) / name;
+        if (std::filesystem::exists(std::filesystem::path(dir) / name))
+            return std::filesystem::path(dir) / name;
     return {};
 }
 
@@ -42,9 +44,10 @@ TEST_P(MovedCameraMatchesReference, PixelByPixel) {
     if (scene.empty()) GTEST_SKIP() << camera.scene << " not found";
     const std::filesystem::path dir = freshOutputDir("camera/" + scene.stem().string());
     const std::filesystem::path output = dir / "gpu.png";
-    ProcessResult run = runRaytracer({scene.string(), "-o", output.string(), "--width", std::to_string(kWidth),
-                                      "--height", std::to_string(kHeight), "--validate", "--camera-pos",
-                                      camera.position, "--camera-target", camera.target, "--camera-up", camera.up});
+    ProcessResult run =
+        runRaytracer({scene.string(), "-o", output.string(), "--width", std::to_string(kWidth),
+                      "--height", std::to_string(kHeight), "--validate", "--camera-pos",
+                      camera.position, "--camera-target", camera.target, "--camera-up", camera.up});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_FALSE(hasValidationMessage(run)) << run.err;
 
@@ -64,11 +67,13 @@ TEST_P(MovedCameraMatchesReference, PixelByPixel) {
     EXPECT_GE(comparison.fractionWithinTolerance, kMinimumMatch)
         << "max diff " << comparison.maxChannelDifference << " at (" << comparison.worstX << ","
         << comparison.worstY << "), images in " << dir;
-    // The moved view really differs from the default one (the test could not pass by ignoring the camera).
+    // The moved view really differs from the default one (the test could not pass by ignoring the
+    // camera).
     settings.cameraPosition = {0, 0, 0};
     settings.cameraTarget = {0, 0, -1};
     settings.cameraUp = {0, 1, 0};
-    EXPECT_LT(compareImages(gpu, renderReference(loadScene(scene), settings), kTolerance).fractionWithinTolerance,
+    EXPECT_LT(compareImages(gpu, renderReference(loadScene(scene), settings), kTolerance)
+                  .fractionWithinTolerance,
               0.9);
 }
 
@@ -93,9 +98,10 @@ TEST(SpecCamera, GivenExplicitlyIsTheDefaultImageByteForByte) {
     const std::vector<std::string> size = {"--width", "96", "--height", "64", "--spp", "4"};
     std::vector<std::string> plain = {scene.string(), "-o", (dir / "default.png").string()};
     plain.insert(plain.end(), size.begin(), size.end());
-    std::vector<std::string> explicitSpec = {scene.string(), "-o", (dir / "explicit.png").string(),
-                                             "--camera-pos", "0,0,0", "--camera-target", "0,0,-3.5",
-                                             "--camera-up", "0,2,0"};
+    std::vector<std::string> explicitSpec = {
+        scene.string(), "-o",          (dir / "explicit.png").string(),
+        "--camera-pos", "0,0,0",       "--camera-target",
+        "0,0,-3.5",     "--camera-up", "0,2,0"};
     explicitSpec.insert(explicitSpec.end(), size.begin(), size.end());
     ASSERT_EQ(runRaytracer(plain).exitCode, 0);
     ProcessResult run = runRaytracer(explicitSpec);
@@ -109,7 +115,8 @@ TEST(CameraOptions, ImpossibleCamerasAreUsageErrors) {
         {{"x.scene", "--camera-target", "a,b,c"}, "--camera-target expects a number, got 'a'"},
         {{"x.scene", "--camera-pos", "1,1,1", "--camera-target", "1,1,1"},
          "the camera target must differ from the camera position"},
-        {{"x.scene", "--camera-target", "0,5,0"}, "the camera up vector must not be parallel to the view direction"},
+        {{"x.scene", "--camera-target", "0,5,0"},
+         "the camera up vector must not be parallel to the view direction"},
         {{"x.scene", "--camera-up", "0,0,0"}, "the camera up vector must not be zero"},
     };
     for (const auto& [args, message] : cases) {
@@ -122,9 +129,10 @@ TEST(CameraOptions, ImpossibleCamerasAreUsageErrors) {
 TEST(CameraOptions, HelpListsThemAndTheWindowKeys) {
     ProcessResult run = runRaytracer({"--help"});
     EXPECT_EQ(run.exitCode, 0);
-    for (const char* text : {"--camera-pos X,Y,Z", "--camera-target X,Y,Z", "--camera-up X,Y,Z", "--shader-dir DIR",
-                             "--dump-shaders DIR", "R reloads", "P writes a screenshot", "V toggles vsync",
-                             "C or Home resets the camera"})
+    for (const char* text :
+         {"--camera-pos X,Y,Z", "--camera-target X,Y,Z", "--camera-up X,Y,Z", "--shader-dir DIR",
+          "--dump-shaders DIR", "R reloads", "P writes a screenshot", "V toggles vsync",
+          "C or Home resets the camera"})
         EXPECT_NE(run.out.find(text), std::string::npos) << text;
 }
 

@@ -1,7 +1,7 @@
 // The command line as a user meets it: help, usage errors, bad scene files (clear
 // message, non-zero exit, no image written), device choice and --bench output.
-#include "test_support.h"
 #include "scene/scene_loader.h"
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -26,9 +26,9 @@ TEST(CommandLine, HelpPrintsUsageAndSucceeds) {
     EXPECT_EQ(run.exitCode, 0);
     EXPECT_NE(run.out.find("Usage: Raytracer SCENE"), std::string::npos) << run.out;
     EXPECT_NE(run.out.find("--bench N"), std::string::npos);
-    for (const char* option : {"--sampler grid|stratified|r2", "--seed N", "--precision fp32|fp64",
-                               "--sphere-test naive|stable", "--triangle-test mt|watertight",
-                               "--offset fixed|scaled"})
+    for (const char* option :
+         {"--sampler grid|stratified|r2", "--seed N", "--precision fp32|fp64",
+          "--sphere-test naive|stable", "--triangle-test mt|watertight", "--offset fixed|scaled"})
         EXPECT_NE(run.out.find(option), std::string::npos) << option << " missing from " << run.out;
 }
 
@@ -41,19 +41,24 @@ TEST(CommandLine, MissingSceneArgumentIsAUsageError) {
 TEST(CommandLine, BadOptionValuesAreUsageErrors) {
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
         {{"x.scene", "--width", "0"}, "--width expects a whole number from 1 to 16384, got '0'"},
-        {{"x.scene", "--height", "-5"}, "--height expects a whole number from 1 to 16384, got '-5'"},
+        {{"x.scene", "--height", "-5"},
+         "--height expects a whole number from 1 to 16384, got '-5'"},
         {{"x.scene", "--spp", "abc"}, "--spp expects a whole number from 1 to 65536, got 'abc'"},
         {{"x.scene", "--depth", "65"}, "--depth expects a whole number from 0 to 64, got '65'"},
         {{"x.scene", "--fov", "180"}, "--fov expects degrees strictly between 0 and 180"},
-        {{"x.scene", "--background", "1,1"}, "--background expects three non-negative numbers R,G,B, got '1,1'"},
+        {{"x.scene", "--background", "1,1"},
+         "--background expects three non-negative numbers R,G,B, got '1,1'"},
         {{"x.scene", "--width"}, "--width expects a value"},
         {{"x.scene", "--frobnicate"}, "unknown option '--frobnicate' (see --help)"},
         {{"a.scene", "b.scene"}, "more than one scene file given: 'a.scene' and 'b.scene'"},
-        {{"x.scene", "--sampler", "halton"}, "--sampler expects grid, stratified or r2, got 'halton'"},
-        {{"x.scene", "--seed", "-1"}, "--seed expects a whole number from 0 to 4294967295, got '-1'"},
+        {{"x.scene", "--sampler", "halton"},
+         "--sampler expects grid, stratified or r2, got 'halton'"},
+        {{"x.scene", "--seed", "-1"},
+         "--seed expects a whole number from 0 to 4294967295, got '-1'"},
         {{"x.scene", "--precision", "fp16"}, "--precision expects fp32 or fp64, got 'fp16'"},
         {{"x.scene", "--sphere-test", "fast"}, "--sphere-test expects naive or stable, got 'fast'"},
-        {{"x.scene", "--triangle-test", "MT"}, "--triangle-test expects mt or watertight, got 'MT'"},
+        {{"x.scene", "--triangle-test", "MT"},
+         "--triangle-test expects mt or watertight, got 'MT'"},
         {{"x.scene", "--offset", "1e-4"}, "--offset expects fixed or scaled, got '1e-4'"},
         {{"x.scene", "--sampler"}, "--sampler expects a value"},
     };
@@ -69,14 +74,16 @@ TEST(CommandLine, MissingSceneFileNamesTheFileAndWritesNothing) {
     std::filesystem::path output = dir / "out.png";
     ProcessResult run = runRaytracer({(dir / "nope.scene").string(), "-o", output.string()});
     EXPECT_EQ(run.exitCode, 3);
-    EXPECT_NE(run.err.find((dir / "nope.scene").string() + ": error: cannot open file"), std::string::npos)
+    EXPECT_NE(run.err.find((dir / "nope.scene").string() + ": error: cannot open file"),
+              std::string::npos)
         << run.err;
     EXPECT_FALSE(std::filesystem::exists(output));
 }
 
 TEST(CommandLine, MalformedSceneNamesFileAndLineAndWritesNothing) {
     std::filesystem::path dir = freshOutputDir("cli/malformed");
-    std::filesystem::path scene = writeScene(dir, "1\namb: 0 0 0\nsphere\npos: 0 0 -3\nradius: 1\n");
+    std::filesystem::path scene =
+        writeScene(dir, "1\namb: 0 0 0\nsphere\npos: 0 0 -3\nradius: 1\n");
     std::filesystem::path output = dir / "out.png";
     ProcessResult run = runRaytracer({scene.string(), "-o", output.string()});
     EXPECT_EQ(run.exitCode, 3);
@@ -90,8 +97,8 @@ TEST(CommandLine, WarningsArePrintedAndTheRenderGoesOn) {
     std::string text = minimalScene();
     text.replace(text.find("spe: 0.3 0.3 0.3"), 16, "spe: 1.5 0.3 0.3");
     std::filesystem::path scene = writeScene(dir, text);
-    ProcessResult run = runRaytracer({scene.string(), "-o", (dir / "out.png").string(), "--width", "32",
-                                      "--height", "24", "--validate"});
+    ProcessResult run = runRaytracer({scene.string(), "-o", (dir / "out.png").string(), "--width",
+                                      "32", "--height", "24", "--validate"});
     EXPECT_EQ(run.exitCode, 0) << run.err;
     EXPECT_NE(run.err.find(scene.string() + ":7: warning: "), std::string::npos) << run.err;
     EXPECT_TRUE(std::filesystem::exists(dir / "out.png"));
@@ -100,10 +107,11 @@ TEST(CommandLine, WarningsArePrintedAndTheRenderGoesOn) {
 TEST(CommandLine, UnknownDeviceListsTheDevicesFound) {
     std::filesystem::path dir = freshOutputDir("cli/device");
     std::filesystem::path scene = writeScene(dir, minimalScene());
-    ProcessResult run = runRaytracer({scene.string(), "-o", (dir / "out.png").string(), "--device",
-                                      "no-such-gpu"});
+    ProcessResult run =
+        runRaytracer({scene.string(), "-o", (dir / "out.png").string(), "--device", "no-such-gpu"});
     EXPECT_EQ(run.exitCode, 1);
-    EXPECT_NE(run.err.find("--device no-such-gpu matches no Vulkan device. Found:"), std::string::npos)
+    EXPECT_NE(run.err.find("--device no-such-gpu matches no Vulkan device. Found:"),
+              std::string::npos)
         << run.err;
     EXPECT_NE(run.err.find("llvmpipe"), std::string::npos) << run.err;
 }
@@ -112,8 +120,9 @@ TEST(CommandLine, DeviceByIndexAndNameIsUsedAndPrinted) {
     std::filesystem::path dir = freshOutputDir("cli/device-choice");
     std::filesystem::path scene = writeScene(dir, minimalScene());
     for (std::string request : {"0", "llvmpipe"}) {
-        ProcessResult run = runRaytracer({scene.string(), "-o", (dir / "out.png").string(), "--device",
-                                          request, "--width", "32", "--height", "24", "--validate"});
+        ProcessResult run =
+            runRaytracer({scene.string(), "-o", (dir / "out.png").string(), "--device", request,
+                          "--width", "32", "--height", "24", "--validate"});
         EXPECT_EQ(run.exitCode, 0) << run.err;
         EXPECT_NE(run.err.find("Device: llvmpipe"), std::string::npos) << run.err;
     }
@@ -126,7 +135,8 @@ TEST(CommandLine, WithoutDisplayTheWindowModeRendersHeadless) {
     unsetenv("WAYLAND_DISPLAY");
     ProcessResult run = runRaytracer({scene.string(), "--width", "32", "--height", "24"}, 300, dir);
     EXPECT_EQ(run.exitCode, 0) << run.err;
-    EXPECT_NE(run.err.find("No display: rendering headless to input.png"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("No display: rendering headless to input.png"), std::string::npos)
+        << run.err;
     EXPECT_EQ(readPng(dir / "input.png").width, 32);
 }
 
@@ -136,32 +146,49 @@ TEST(CommandLine, ValidationIsOnAndAnyMessageFailsTheRun) {
     // project does not follow, e.g. small allocations) provoke some on purpose.
     std::filesystem::path dir = freshOutputDir("cli/validation");
     std::filesystem::path scene = writeScene(dir, minimalScene());
-    std::vector<std::string> args = {scene.string(), "-o", (dir / "out.png").string(), "--width", "16",
-                                     "--height", "16", "--validate"};
+    std::vector<std::string> args = {scene.string(), "-o",        (dir / "out.png").string(),
+                                     "--width",      "16",        "--height",
+                                     "16",           "--validate"};
     ProcessResult clean = runRaytracer(args);
     EXPECT_EQ(clean.exitCode, 0) << clean.err;
-    EXPECT_NE(clean.err.find("Validation: VK_LAYER_KHRONOS_validation on"), std::string::npos) << clean.err;
+    EXPECT_NE(clean.err.find("Validation: VK_LAYER_KHRONOS_validation on"), std::string::npos)
+        << clean.err;
 
     setenv("VK_LAYER_ENABLES", "VK_VALIDATION_FEATURE_ENABLE_BEST_PRACTICES_EXT", 1);
     ProcessResult noisy = runRaytracer(args);
     unsetenv("VK_LAYER_ENABLES");
     EXPECT_EQ(noisy.exitCode, 4) << noisy.err;
-    EXPECT_NE(noisy.err.find("error: the validation layer printed"), std::string::npos) << noisy.err;
+    EXPECT_NE(noisy.err.find("error: the validation layer printed"), std::string::npos)
+        << noisy.err;
 }
 
 TEST(CommandLine, BenchPrintsOneJsonLineWithEveryKey) {
     std::filesystem::path dir = freshOutputDir("cli/bench");
     std::filesystem::path scene = writeScene(dir, minimalScene());
-    ProcessResult run = runRaytracer({scene.string(), "--bench", "3", "--width", "64", "--height", "48",
-                                      "--validate"});
+    ProcessResult run = runRaytracer(
+        {scene.string(), "--bench", "3", "--width", "64", "--height", "48", "--validate"});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     std::string json = run.out.substr(run.out.rfind('{'));
-    for (const char* key : {"\"scene\"", "\"width\": 64", "\"height\": 48", "\"spp\": 1", "\"depth\": 5",
-                            "\"frames\": 3", "\"device\": \"llvmpipe", "\"wall_ms_median\"",
-                            "\"wall_ms_min\"", "\"gpu_ms_median\"", "\"startup_ms\"", "\"gpu_bytes\"",
-                            "\"parse_ms\"", "\"submissions\"", "\"sampler\": \"r2\"", "\"seed\": 0",
-                            "\"precision\": \"fp32\"", "\"sphere_test\": \"stable\"",
-                            "\"triangle_test\": \"watertight\"", "\"offset\": \"scaled\""})
+    for (const char* key : {"\"scene\"",
+                            "\"width\": 64",
+                            "\"height\": 48",
+                            "\"spp\": 1",
+                            "\"depth\": 5",
+                            "\"frames\": 3",
+                            "\"device\": \"llvmpipe",
+                            "\"wall_ms_median\"",
+                            "\"wall_ms_min\"",
+                            "\"gpu_ms_median\"",
+                            "\"startup_ms\"",
+                            "\"gpu_bytes\"",
+                            "\"parse_ms\"",
+                            "\"submissions\"",
+                            "\"sampler\": \"r2\"",
+                            "\"seed\": 0",
+                            "\"precision\": \"fp32\"",
+                            "\"sphere_test\": \"stable\"",
+                            "\"triangle_test\": \"watertight\"",
+                            "\"offset\": \"scaled\""})
         EXPECT_NE(json.find(key), std::string::npos) << key << " missing from " << json;
     EXPECT_EQ(json.find("null"), std::string::npos) << "lavapipe has timestamps: " << json;
 }
@@ -169,15 +196,31 @@ TEST(CommandLine, BenchPrintsOneJsonLineWithEveryKey) {
 TEST(CommandLine, BenchReportsTheKernelChoices) {
     std::filesystem::path dir = freshOutputDir("cli/bench-choices");
     std::filesystem::path scene = writeScene(dir, minimalScene());
-    ProcessResult run = runRaytracer({scene.string(), "--bench", "1", "--width", "16", "--height", "16",
-                                      "--validate", "--sampler", "grid", "--seed", "7", "--precision",
-                                      "fp64", "--sphere-test", "naive", "--triangle-test", "mt",
-                                      "--offset", "fixed"});
+    ProcessResult run = runRaytracer({scene.string(),
+                                      "--bench",
+                                      "1",
+                                      "--width",
+                                      "16",
+                                      "--height",
+                                      "16",
+                                      "--validate",
+                                      "--sampler",
+                                      "grid",
+                                      "--seed",
+                                      "7",
+                                      "--precision",
+                                      "fp64",
+                                      "--sphere-test",
+                                      "naive",
+                                      "--triangle-test",
+                                      "mt",
+                                      "--offset",
+                                      "fixed"});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     std::string json = run.out.substr(run.out.rfind('{'));
-    for (const char* key : {"\"sampler\": \"grid\"", "\"seed\": 7", "\"precision\": \"fp64\"",
-                            "\"sphere_test\": \"naive\"", "\"triangle_test\": \"mt\"",
-                            "\"offset\": \"fixed\""})
+    for (const char* key :
+         {"\"sampler\": \"grid\"", "\"seed\": 7", "\"precision\": \"fp64\"",
+          "\"sphere_test\": \"naive\"", "\"triangle_test\": \"mt\"", "\"offset\": \"fixed\""})
         EXPECT_NE(json.find(key), std::string::npos) << key << " missing from " << json;
 }
 
@@ -194,9 +237,9 @@ TEST(CommandLine, SamplesPerPixelAverageJitteredSamples) {
     settings.spp = 16;
     Image8 reference = renderReference(loadScene(scene), settings);
     for (const std::string sampler : {"r2", "stratified"}) {
-        ProcessResult run = runRaytracer({scene.string(), "-o", (dir / "out.png").string(), "--spp",
-                                          "16", "--sampler", sampler, "--width", "80", "--height",
-                                          "60", "--validate"});
+        ProcessResult run =
+            runRaytracer({scene.string(), "-o", (dir / "out.png").string(), "--spp", "16",
+                          "--sampler", sampler, "--width", "80", "--height", "60", "--validate"});
         ASSERT_EQ(run.exitCode, 0) << run.err;
         ImageComparison comparison = compareImages(readPng(dir / "out.png"), reference, 2);
         std::printf("spp 16 %s: %s\n", sampler.c_str(), describe(comparison).c_str());
@@ -210,8 +253,9 @@ std::vector<std::uint8_t> renderBytes(const std::filesystem::path& dir, const st
                                       const std::vector<std::string>& extra) {
     std::filesystem::path scene = dir / "input.scene";
     if (!std::filesystem::exists(scene)) writeScene(dir, minimalScene());
-    std::vector<std::string> args = {scene.string(), "-o", (dir / (name + ".png")).string(),
-                                     "--width", "40", "--height", "30", "--validate"};
+    std::vector<std::string> args = {scene.string(), "-o",        (dir / (name + ".png")).string(),
+                                     "--width",      "40",        "--height",
+                                     "30",           "--validate"};
     args.insert(args.end(), extra.begin(), extra.end());
     ProcessResult run = runRaytracer(args);
     EXPECT_EQ(run.exitCode, 0) << run.err;
@@ -222,7 +266,8 @@ TEST(CommandLine, OneSampleIsThePixelCentreWhateverTheSampler) {
     std::filesystem::path dir = freshOutputDir("cli/sampler-spp1");
     std::vector<std::uint8_t> centre = renderBytes(dir, "default", {});
     for (const char* sampler : {"grid", "stratified", "r2"})
-        EXPECT_EQ(renderBytes(dir, sampler, {"--sampler", sampler, "--seed", "9"}), centre) << sampler;
+        EXPECT_EQ(renderBytes(dir, sampler, {"--sampler", sampler, "--seed", "9"}), centre)
+            << sampler;
 }
 
 TEST(CommandLine, SamplersAreDeterministicAndTheSeedVariesTheJitter) {
@@ -230,7 +275,8 @@ TEST(CommandLine, SamplersAreDeterministicAndTheSeedVariesTheJitter) {
     for (const std::string sampler : {"grid", "stratified", "r2"}) {
         std::vector<std::string> flags = {"--spp", "16", "--sampler", sampler};
         std::vector<std::uint8_t> first = renderBytes(dir, sampler + "-a", flags);
-        EXPECT_EQ(renderBytes(dir, sampler + "-b", flags), first) << sampler << ": same command, other image";
+        EXPECT_EQ(renderBytes(dir, sampler + "-b", flags), first)
+            << sampler << ": same command, other image";
         flags.insert(flags.end(), {"--seed", "12345"});
         std::vector<std::uint8_t> seeded = renderBytes(dir, sampler + "-seeded", flags);
         if (sampler == "grid")
@@ -245,8 +291,9 @@ TEST(CommandLine, GridSamplerMatchesTheReferenceGrid) {
     // the grid sampler's image must match it as closely as one sample per pixel does.
     std::filesystem::path dir = freshOutputDir("cli/sampler-grid");
     std::filesystem::path scene = writeScene(dir, minimalScene());
-    ProcessResult run = runRaytracer({scene.string(), "-o", (dir / "out.png").string(), "--spp", "16",
-                                      "--sampler", "grid", "--width", "80", "--height", "60", "--validate"});
+    ProcessResult run =
+        runRaytracer({scene.string(), "-o", (dir / "out.png").string(), "--spp", "16", "--sampler",
+                      "grid", "--width", "80", "--height", "60", "--validate"});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     ReferenceSettings settings;
     settings.width = 80;
@@ -283,7 +330,7 @@ TEST(CommandLine, GeneralKernelGivesTheSameBytes) {
         for (int general = 0; general < 2; ++general) {
             const std::filesystem::path png = dir / (name + std::to_string(general) + ".png");
             std::vector<std::string> args = {scene.string(), "-o", png.string(), "--width", "40",
-                                             "--height", "30", "--validate"};
+                                             "--height",     "30", "--validate"};
             if (general) args.push_back("--general-kernel");
             ProcessResult run = runRaytracer(args);
             ASSERT_EQ(run.exitCode, 0) << run.err;
@@ -294,17 +341,19 @@ TEST(CommandLine, GeneralKernelGivesTheSameBytes) {
 
         // The flag did change the kernel: --bench names what the specialised one left out.
         for (const bool general : {false, true}) {
-            std::vector<std::string> args = {scene.string(), "--bench", "1", "--width", "16",
-                                             "--height", "16"};
+            std::vector<std::string> args = {scene.string(), "--bench",  "1", "--width",
+                                             "16",           "--height", "16"};
             if (general) args.push_back("--general-kernel");
             ProcessResult run = runRaytracer(args);
             ASSERT_EQ(run.exitCode, 0) << run.err;
             const std::string json = run.out.substr(run.out.rfind('{'));
             const std::string specialised =
                 name == "matte" ? "[\"highlight\", \"mirrors\"]" : "[\"triangles\"]";
-            const std::string expected = general ? "\"general_kernel\": true, \"compiled_out\": []"
-                                                 : "\"general_kernel\": false, \"compiled_out\": " + specialised;
-            EXPECT_NE(json.find(expected), std::string::npos) << expected << " missing from " << json;
+            const std::string expected =
+                general ? "\"general_kernel\": true, \"compiled_out\": []"
+                        : "\"general_kernel\": false, \"compiled_out\": " + specialised;
+            EXPECT_NE(json.find(expected), std::string::npos)
+                << expected << " missing from " << json;
         }
     }
 }

@@ -137,7 +137,8 @@ TEST_P(Conformance, GpuMatchesCpuReferenceWithAndWithoutHierarchy) {
     expectMatchesReference(none64, reference, dir, label + " none fp64", kMinimumMatchFp64);
     EXPECT_EQ(differingPixels(bvh64, none64), 0)
         << "the hierarchy changed pixels in fp64; images kept in " << dir;
-    EXPECT_LE(double64.pixels - double64.pixelsWithinTolerance, fp32.pixels - fp32.pixelsWithinTolerance)
+    EXPECT_LE(double64.pixels - double64.pixelsWithinTolerance,
+              fp32.pixels - fp32.pixelsWithinTolerance)
         << "fp64 is further from the reference than fp32; images kept in " << dir;
     if (!HasFailure()) std::filesystem::remove_all(dir);
 }

@@ -3,10 +3,10 @@
 // failed or interrupted run leaves an existing PNG as it was), Ctrl-C ends a long
 // render cleanly. Unit tests where a real fault cannot be provoked on lavapipe.
 #include "gpu/image_limits.h"
+#include "gpu/vk_check.h"
 #include "render/interrupt.h"
 #include "render/scene_packing.h"
 #include "test_support.h"
-#include "gpu/vk_check.h"
 
 #include <gtest/gtest.h>
 
@@ -37,7 +37,9 @@ std::string fileBytes(const std::filesystem::path& path) {
     return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
 
 // An existing "good" PNG that a failed or interrupted run must leave as it was.
 std::string writeGoodPng(const std::filesystem::path& path) {
@@ -52,12 +54,16 @@ std::string writeGoodPng(const std::filesystem::path& path) {
 struct ScopedEnvironment {
     ScopedEnvironment(const char* variableName, const char* value) : name(variableName) {
         if (const char* old = std::getenv(name)) saved = old, hadValue = true;
-        if (value) setenv(name, value, 1);
-        else unsetenv(name);
+        if (value)
+            setenv(name, value, 1);
+        else
+            unsetenv(name);
     }
     ~ScopedEnvironment() {
-        if (hadValue) setenv(name, saved.c_str(), 1);
-        else unsetenv(name);
+        if (hadValue)
+            setenv(name, saved.c_str(), 1);
+        else
+            unsetenv(name);
     }
     const char* name;
     std::string saved;
@@ -79,7 +85,8 @@ void expectThrowsWith(const std::function<void()>& action, const std::vector<std
         action();
         ADD_FAILURE() << "no exception; expected one naming " << parts.front();
     } catch (const std::runtime_error& error) {
-        for (const std::string& part : parts) EXPECT_TRUE(contains(error.what(), part)) << error.what();
+        for (const std::string& part : parts)
+            EXPECT_TRUE(contains(error.what(), part)) << error.what();
     }
 }
 
@@ -90,8 +97,9 @@ TEST(Limits, ImagesWithinTheDeviceLimitsFit) {
 
 TEST(Limits, EachExceededLimitIsNamedWithTheDevice) {
     ImageLimits limits = lavapipeLikeLimits();
-    expectThrowsWith([&] { checkImageFits(limits, 16385, 16, true); },
-                     {"16385x16 image exceeds this device's maxImageDimension2D of 16384", "(Test GPU)"});
+    expectThrowsWith(
+        [&] { checkImageFits(limits, 16385, 16, true); },
+        {"16385x16 image exceeds this device's maxImageDimension2D of 16384", "(Test GPU)"});
     limits.maxMemoryAllocationSize = VkDeviceSize(512) << 20;
     expectThrowsWith([&] { checkImageFits(limits, 16384, 16384, true); },
                      {"needs 1024 MiB", "maxMemoryAllocationSize of 512 MiB (Test GPU)"});
@@ -122,9 +130,10 @@ TEST(Limits, ASceneBeyondMaxStorageBufferRangeNamesTheLimitAndTheDevice) {
 TEST(Limits, ExtremeImageShapesRender) {
     std::filesystem::path dir = freshOutputDir("hardening/shapes");
     std::filesystem::path scene = writeScene(dir);
-    for (auto [width, height] : {std::pair{"16384", "4"}, std::pair{"4", "16384"}, std::pair{"1", "1"}}) {
-        ProcessResult run = runRaytracer({scene.string(), "-o", (dir / "out.png").string(), "--width", width,
-                                          "--height", height, "--validate"});
+    for (auto [width, height] :
+         {std::pair{"16384", "4"}, std::pair{"4", "16384"}, std::pair{"1", "1"}}) {
+        ProcessResult run = runRaytracer({scene.string(), "-o", (dir / "out.png").string(),
+                                          "--width", width, "--height", height, "--validate"});
         ASSERT_EQ(run.exitCode, 0) << run.err;
         Image8 image = readPng(dir / "out.png");
         EXPECT_EQ(std::to_string(image.width) + "x" + std::to_string(image.height),
@@ -134,22 +143,28 @@ TEST(Limits, ExtremeImageShapesRender) {
 
 TEST(Limits, AbsurdSizesSamplesAndDepthsAreUsageErrors) {
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
-        {{"x.scene", "--width", "16385"}, "--width expects a whole number from 1 to 16384, got '16385'"},
+        {{"x.scene", "--width", "16385"},
+         "--width expects a whole number from 1 to 16384, got '16385'"},
         {{"x.scene", "--height", "0"}, "--height expects a whole number from 1 to 16384, got '0'"},
         {{"x.scene", "--width", "99999999999999999999"},
          "--width expects a whole number from 1 to 16384, got '99999999999999999999'"},
-        {{"x.scene", "--width", "4294967296"}, "--width expects a whole number from 1 to 16384, got '4294967296'"},
-        {{"x.scene", "--width", "64.5"}, "--width expects a whole number from 1 to 16384, got '64.5'"},
+        {{"x.scene", "--width", "4294967296"},
+         "--width expects a whole number from 1 to 16384, got '4294967296'"},
+        {{"x.scene", "--width", "64.5"},
+         "--width expects a whole number from 1 to 16384, got '64.5'"},
         {{"x.scene", "--width", ""}, "--width expects a whole number from 1 to 16384, got ''"},
         {{"x.scene", "--spp", "0"}, "--spp expects a whole number from 1 to 65536, got '0'"},
-        {{"x.scene", "--spp", "65537"}, "--spp expects a whole number from 1 to 65536, got '65537'"},
+        {{"x.scene", "--spp", "65537"},
+         "--spp expects a whole number from 1 to 65536, got '65537'"},
         {{"x.scene", "--spp", "-1"}, "--spp expects a whole number from 1 to 65536, got '-1'"},
         {{"x.scene", "--depth", "-1"}, "--depth expects a whole number from 0 to 64, got '-1'"},
-        {{"x.scene", "--depth", "1000000"}, "--depth expects a whole number from 0 to 64, got '1000000'"},
+        {{"x.scene", "--depth", "1000000"},
+         "--depth expects a whole number from 0 to 64, got '1000000'"},
         {{"x.scene", "--bench", "0"}, "--bench expects a whole number from 1 to 100000, got '0'"},
         {{"x.scene", "--fov", "nan"}, "--fov expects a number, got 'nan'"},
         {{"x.scene", "--fov", "-10"}, "--fov expects degrees strictly between 0 and 180"},
-        {{"x.scene", "--background", "1,-1,1"}, "--background expects three non-negative numbers R,G,B"},
+        {{"x.scene", "--background", "1,-1,1"},
+         "--background expects three non-negative numbers R,G,B"},
         {{"x.scene", "--window", "-o", "x.png"}, "--window cannot be combined with -o or --bench"},
     };
     for (const auto& [args, message] : cases) {
@@ -177,23 +192,28 @@ TEST(EnvironmentFaults, WindowAskedForWithoutADisplayIsAnError) {
     std::filesystem::path scene = writeScene(dir);
     ScopedEnvironment display("DISPLAY", nullptr);
     ScopedEnvironment wayland("WAYLAND_DISPLAY", nullptr);
-    ProcessResult run = runRaytracer({scene.string(), "--window", "--width", "32", "--height", "24"}, 120, dir);
+    ProcessResult run =
+        runRaytracer({scene.string(), "--window", "--width", "32", "--height", "24"}, 120, dir);
     EXPECT_EQ(run.exitCode, 1) << run.err;
-    EXPECT_TRUE(contains(run.err, "error: --window was given, but no window can be opened: ")) << run.err;
+    EXPECT_TRUE(contains(run.err, "error: --window was given, but no window can be opened: "))
+        << run.err;
     EXPECT_TRUE(contains(run.err, "DISPLAY")) << run.err; // GLFW's reason
-    EXPECT_FALSE(std::filesystem::exists(dir / "input.png")) << "no headless fallback with --window";
+    EXPECT_FALSE(std::filesystem::exists(dir / "input.png"))
+        << "no headless fallback with --window";
 }
 
 TEST(EnvironmentFaults, ALostDeviceSaysSo) {
     // lavapipe cannot be made to lose its device; the one error path for every Vulkan
     // call is what a lost device goes through.
     try {
-        throwVulkanError(VK_ERROR_DEVICE_LOST, "vkWaitForFences(...)", "/src/host/render/headless.cpp", 42);
+        throwVulkanError(VK_ERROR_DEVICE_LOST, "vkWaitForFences(...)",
+                         "/src/host/render/headless.cpp", 42);
         FAIL() << "no exception";
     } catch (const VulkanError& error) {
         EXPECT_EQ(error.result, VK_ERROR_DEVICE_LOST);
         EXPECT_EQ(std::string(error.what()),
-                  "Vulkan call failed with VK_ERROR_DEVICE_LOST (-4) at headless.cpp:42: vkWaitForFences(...)\n"
+                  "Vulkan call failed with VK_ERROR_DEVICE_LOST (-4) at headless.cpp:42: "
+                  "vkWaitForFences(...)\n"
                   "(the device was lost: a driver crash, a GPU reset or a watchdog timeout)");
     }
 }
@@ -206,7 +226,8 @@ TEST(NothingLost, UnwritableOutputFailsBeforeRenderingAndWritesNothing) {
     const std::vector<std::pair<std::filesystem::path, std::string>> cases = {
         {dir / "no-such-folder" / "out.png", "out.png.tmp: No such file or directory"},
         {dir / "a-file" / "out.png", "out.png.tmp: Not a directory"},
-        {"/proc/raytracer-out.png", "cannot create /proc/raytracer-out.png.tmp"}, // unwritable, even for root
+        {"/proc/raytracer-out.png",
+         "cannot create /proc/raytracer-out.png.tmp"}, // unwritable, even for root
         {dir / "folder.png", "folder.png: is a folder, not a file name"},
     };
     for (const auto& [output, message] : cases) {
@@ -214,14 +235,16 @@ TEST(NothingLost, UnwritableOutputFailsBeforeRenderingAndWritesNothing) {
         EXPECT_EQ(run.exitCode, 1) << run.err;
         EXPECT_TRUE(contains(run.err, "error: " + output.string() + ": ")) << run.err;
         EXPECT_TRUE(contains(run.err, message)) << run.err;
-        EXPECT_FALSE(contains(run.err, "Device:")) << "failed only after choosing a device: " << run.err;
+        EXPECT_FALSE(contains(run.err, "Device:"))
+            << "failed only after choosing a device: " << run.err;
         EXPECT_FALSE(std::filesystem::exists(output.string() + ".tmp"));
     }
     if (geteuid() != 0) { // root writes into read-only folders
         std::filesystem::create_directories(dir / "read-only");
         std::filesystem::permissions(dir / "read-only", std::filesystem::perms::owner_read |
                                                             std::filesystem::perms::owner_exec);
-        ProcessResult run = runRaytracer({scene.string(), "-o", (dir / "read-only" / "out.png").string()});
+        ProcessResult run =
+            runRaytracer({scene.string(), "-o", (dir / "read-only" / "out.png").string()});
         EXPECT_EQ(run.exitCode, 1) << run.err;
         EXPECT_TRUE(contains(run.err, "Permission denied")) << run.err;
         std::filesystem::permissions(dir / "read-only", std::filesystem::perms::owner_all);
@@ -243,13 +266,15 @@ TEST(NothingLost, AFailedRunLeavesAnExistingPngAsItWas) {
     std::filesystem::remove(dir / "out.png.tmp");
 
     // A failure after the output was reserved (no such device) removes the reservation.
-    ProcessResult noDevice = runRaytracer({scene.string(), "-o", output.string(), "--device", "no-such-gpu"});
+    ProcessResult noDevice =
+        runRaytracer({scene.string(), "-o", output.string(), "--device", "no-such-gpu"});
     EXPECT_EQ(noDevice.exitCode, 1) << noDevice.err;
     EXPECT_EQ(fileBytes(output), good);
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png.tmp"));
 
     // And a good run replaces it.
-    ProcessResult ok = runRaytracer({scene.string(), "-o", output.string(), "--width", "8", "--height", "8"});
+    ProcessResult ok =
+        runRaytracer({scene.string(), "-o", output.string(), "--width", "8", "--height", "8"});
     EXPECT_EQ(ok.exitCode, 0) << ok.err;
     EXPECT_EQ(readPng(output).width, 8);
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png.tmp"));
@@ -280,8 +305,8 @@ void expectSignalEndsALongRenderCleanly(int signalNumber, const std::string& nam
     Clock::time_point sent;
     bool signalled = false;
     ProcessResult run = runRaytracerWhile(
-        {std::string(PROJECT_SCENES_DIR) + "/mesh.scene", "-o", output.string(), "--width", "4096", "--height",
-         "4096", "--spp", "16"},
+        {std::string(PROJECT_SCENES_DIR) + "/mesh.scene", "-o", output.string(), "--width", "4096",
+         "--height", "4096", "--spp", "16"},
         [&](pid_t pid, const std::filesystem::path& errPath) {
             // Wait until the device is chosen (the handlers are installed by then), then
             // a little longer, so that submissions are running.
@@ -303,8 +328,12 @@ void expectSignalEndsALongRenderCleanly(int signalNumber, const std::string& nam
     std::printf("%s: exited %.2f s after the signal\n", name.c_str(), secondsToExit);
 }
 
-TEST(NothingLost, CtrlCEndsALongRenderCleanly) { expectSignalEndsALongRenderCleanly(SIGINT, "SIGINT"); }
+TEST(NothingLost, CtrlCEndsALongRenderCleanly) {
+    expectSignalEndsALongRenderCleanly(SIGINT, "SIGINT");
+}
 
-TEST(NothingLost, SigtermEndsALongRenderCleanly) { expectSignalEndsALongRenderCleanly(SIGTERM, "SIGTERM"); }
+TEST(NothingLost, SigtermEndsALongRenderCleanly) {
+    expectSignalEndsALongRenderCleanly(SIGTERM, "SIGTERM");
+}
 
 } // namespace

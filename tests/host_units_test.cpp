@@ -1,12 +1,12 @@
 // Host pieces that need no GPU: the runtime shader compiler, the scene packer, the kernel's
 // variants (precision, specialization) and their cache keys.
 #include "gpu/context.h"
-#include "render/trace_pipeline.h"
-#include "render/renderer.h"
-#include "render/scene_packing.h"
-#include "window/screenshot.h"
 #include "gpu/shader_compiler.h"
 #include "render/kernel_sources.h"
+#include "render/renderer.h"
+#include "render/scene_packing.h"
+#include "render/trace_pipeline.h"
+#include "window/screenshot.h"
 
 #include <gtest/gtest.h>
 
@@ -44,22 +44,25 @@ TEST(ShaderCompiler, ErrorsCarryGlslangLogWithFileAndLine) {
 }
 
 TEST(ShaderCompiler, ErrorsInIncludedFilesNameThatFile) {
-    auto load = loaderFor({{"main.comp", "#version 460\n#extension GL_GOOGLE_include_directive : require\n"
-                                         "#include \"helper.glsl\"\nlayout(local_size_x = 1) in;\n"
-                                         "void main() { helper(); }\n"},
-                           {"helper.glsl", "void helper() {\n    float x = nope;\n}\n"}});
+    auto load =
+        loaderFor({{"main.comp", "#version 460\n#extension GL_GOOGLE_include_directive : require\n"
+                                 "#include \"helper.glsl\"\nlayout(local_size_x = 1) in;\n"
+                                 "void main() { helper(); }\n"},
+                   {"helper.glsl", "void helper() {\n    float x = nope;\n}\n"}});
     try {
         compileComputeShader("main.comp", load);
         FAIL() << "a broken include compiled";
     } catch (const ShaderCompileError& error) {
-        EXPECT_NE(std::string(error.what()).find("helper.glsl:2:"), std::string::npos) << error.what();
+        EXPECT_NE(std::string(error.what()).find("helper.glsl:2:"), std::string::npos)
+            << error.what();
     }
 }
 
 TEST(ShaderCompiler, MissingIncludeIsReported) {
-    auto load = loaderFor({{"main.comp", "#version 460\n#extension GL_GOOGLE_include_directive : require\n"
-                                         "#include \"absent.glsl\"\nlayout(local_size_x = 1) in;\n"
-                                         "void main() {}\n"}});
+    auto load =
+        loaderFor({{"main.comp", "#version 460\n#extension GL_GOOGLE_include_directive : require\n"
+                                 "#include \"absent.glsl\"\nlayout(local_size_x = 1) in;\n"
+                                 "void main() {}\n"}});
     EXPECT_THROW(compileComputeShader("main.comp", load), ShaderCompileError);
 }
 
@@ -67,7 +70,9 @@ Material material(double red, double shininess = 10) {
     return {glm::dvec3(red, 0.2, 0.3), glm::dvec3(0.5), shininess};
 }
 
-Vertex vertex(glm::dvec3 position, Material m) { return {position, glm::dvec3(0, 0, 1), m}; }
+Vertex vertex(glm::dvec3 position, Material m) {
+    return {position, glm::dvec3(0, 0, 1), m};
+}
 
 TEST(ScenePacking, SharesIdenticalMaterialsAndVertices) {
     Scene scene;
@@ -90,7 +95,8 @@ TEST(ScenePacking, SharesIdenticalMaterialsAndVertices) {
     EXPECT_EQ(packed.triangleVertices, (std::vector<std::uint32_t>{0, 1, 2, 1, 3, 2}));
     ASSERT_EQ(packed.vertexNormals.size(), 3 * 4u); // three floats per vertex
     std::vector<std::uint32_t> vertexMaterials;
-    for (std::size_t v = 0; v < packed.vertexPositions.size(); ++v) vertexMaterials.push_back(vertexMaterial(packed, v));
+    for (std::size_t v = 0; v < packed.vertexPositions.size(); ++v)
+        vertexMaterials.push_back(vertexMaterial(packed, v));
     EXPECT_EQ(vertexMaterials, (std::vector<std::uint32_t>{1, 1, 1, 0}));
     EXPECT_EQ(glm::vec3(packed.vertexPositions[3]), glm::vec3(1, 1, -5));
     EXPECT_EQ(packed.spheres[1], glm::vec4(2, 0, -3, 0.5f));
@@ -156,7 +162,8 @@ TEST(KernelVariants, Fp64OnADeviceWithoutDoublesFailsWithAClearMessage) {
         FAIL() << "a device without shaderFloat64 was accepted";
     } catch (const std::runtime_error& error) {
         std::string message = error.what();
-        EXPECT_NE(message.find("--precision fp64 needs the shaderFloat64 feature"), std::string::npos);
+        EXPECT_NE(message.find("--precision fp64 needs the shaderFloat64 feature"),
+                  std::string::npos);
         EXPECT_NE(message.find("Some GPU does not have"), std::string::npos) << message;
         EXPECT_NE(message.find("--precision fp32"), std::string::npos) << message;
     }
@@ -168,23 +175,28 @@ Scene sceneWith(std::vector<Material> materials, std::size_t lights) {
     Scene scene;
     for (std::size_t i = 0; i < materials.size(); ++i)
         scene.spheres.push_back({glm::dvec3(double(i), 0, -3), 0.5, materials[i]});
-    for (std::size_t i = 0; i < lights; ++i) scene.lights.push_back({glm::dvec3(0, 5, 0), glm::dvec3(1)});
+    for (std::size_t i = 0; i < lights; ++i)
+        scene.lights.push_back({glm::dvec3(0, 5, 0), glm::dvec3(1)});
     return scene;
 }
 
 TEST(KernelVariants, SpecialisedForWhatTheSceneHolds) {
-    Material matte{glm::dvec3(0.5), glm::dvec3(0.0), 10}, shiny{glm::dvec3(0.5), glm::dvec3(0, 0, 0.1), 10};
+    Material matte{glm::dvec3(0.5), glm::dvec3(0.0), 10},
+        shiny{glm::dvec3(0.5), glm::dvec3(0, 0, 0.1), 10};
     RenderSettings settings;
-    TraceSpecialization plain = traceSpecialization(packScene(sceneWith({matte, matte}, 3)), settings);
+    TraceSpecialization plain =
+        traceSpecialization(packScene(sceneWith({matte, matte}, 3)), settings);
     EXPECT_FALSE(plain.hasMirrors);
     EXPECT_FALSE(plain.hasSpecular);
     EXPECT_TRUE(plain.hasSpheres);
     EXPECT_FALSE(plain.hasTriangles);
-    TraceSpecialization mirror = traceSpecialization(packScene(sceneWith({matte, shiny}, 1)), settings);
+    TraceSpecialization mirror =
+        traceSpecialization(packScene(sceneWith({matte, shiny}, 1)), settings);
     EXPECT_TRUE(mirror.hasMirrors);
     EXPECT_TRUE(mirror.hasSpecular);
     settings.depth = 0; // no bounces: highlights, but no reflection loop
-    TraceSpecialization flat = traceSpecialization(packScene(sceneWith({matte, shiny}, 1)), settings);
+    TraceSpecialization flat =
+        traceSpecialization(packScene(sceneWith({matte, shiny}, 1)), settings);
     EXPECT_FALSE(flat.hasMirrors);
     EXPECT_TRUE(flat.hasSpecular);
 }
@@ -198,7 +210,8 @@ TEST(KernelVariants, GeneralKernelIgnoresTheContentButKeepsChoicesAndHierarchy) 
     PackedScene packed = packScene(sceneWith({matte}, 1));
     packed.bvhNodes.resize(1); // as if the scene were large enough for the hierarchy
     TraceSpecialization general = traceSpecialization(packed, settings);
-    EXPECT_TRUE(general.hasSpheres && general.hasTriangles && general.hasSpecular && general.hasMirrors);
+    EXPECT_TRUE(general.hasSpheres && general.hasTriangles && general.hasSpecular &&
+                general.hasMirrors);
     EXPECT_TRUE(general.useHierarchy);
     EXPECT_FALSE(general.stableSphereTest);
     EXPECT_TRUE(general.watertightTriangles);
@@ -209,8 +222,9 @@ TEST(KernelVariants, MethodChoicesBecomeSpecializationConstants) {
     TraceSpecialization robust = traceSpecialization(packScene(sceneWith({}, 1)), settings);
     EXPECT_EQ(robust.sampler, SAMPLER_R2);
     EXPECT_TRUE(robust.stableSphereTest && robust.watertightTriangles && robust.scaledRayOffset);
-    settings.kernel = {Sampler::Stratified, 3, Precision::Fp64, SphereTest::Naive,
-                       TriangleTest::MollerTrumbore, RayOffset::Fixed};
+    settings.kernel = {
+        Sampler::Stratified, 3, Precision::Fp64, SphereTest::Naive, TriangleTest::MollerTrumbore,
+        RayOffset::Fixed};
     TraceSpecialization naive = traceSpecialization(packScene(sceneWith({}, 1)), settings);
     EXPECT_EQ(naive.sampler, SAMPLER_STRATIFIED);
     EXPECT_FALSE(naive.stableSphereTest || naive.watertightTriangles || naive.scaledRayOffset);
@@ -221,7 +235,8 @@ TEST(ScenePacking, Fp64KeepsGeometryInDoubleAndItsBoxesHoldIt) {
     Material m = material(0.5);
     Scene scene;
     scene.spheres.push_back({glm::dvec3(1e5 + 1e-9, 0.1, -3), 0.3, m});
-    Vertex a = vertex({1e5, 0, -5}, m), b = vertex({1e5 + 1e-9, 0, -5}, m), c = vertex({1e5, 1, -5}, m);
+    Vertex a = vertex({1e5, 0, -5}, m), b = vertex({1e5 + 1e-9, 0, -5}, m),
+           c = vertex({1e5, 1, -5}, m);
     scene.triangles.push_back({{a, b, c}});
     scene.triangles.push_back({{b, a, c}});
 
@@ -262,26 +277,29 @@ TEST(ScenePacking, Fp64KeepsGeometryInDoubleAndItsBoxesHoldIt) {
 TEST(ScreenshotCommand, ReproducesEveryChoiceThatChangesPixels) {
     auto parse = [](const std::vector<std::string>& words) {
         std::vector<const char*> argv = {"Raytracer"};
-        for (const std::string& word : words) argv.push_back(word.c_str());
+        for (const std::string& word : words)
+            argv.push_back(word.c_str());
         return parseOptions(int(argv.size()), argv.data());
     };
     auto words = [](const std::string& command) {
         std::istringstream stream(command);
         std::vector<std::string> list;
-        for (std::string word; stream >> word;) list.push_back(word);
+        for (std::string word; stream >> word;)
+            list.push_back(word);
         return std::vector<std::string>(list.begin() + 1, list.end()); // without "Raytracer"
     };
     const Options plain = parse({"a.scene"});
     const std::string plainCommand = headlessCommand(plain, plain.camera, 64, 48, 4);
     EXPECT_NE(plainCommand.find("--depth 5 --fov 60"), std::string::npos) << plainCommand;
-    for (const char* absent : {"--background", "--sampler", "--seed", "--precision", "--sphere-test",
-                               "--triangle-test", "--offset", "--shader-dir"})
+    for (const char* absent : {"--background", "--sampler", "--seed", "--precision",
+                               "--sphere-test", "--triangle-test", "--offset", "--shader-dir"})
         EXPECT_EQ(plainCommand.find(absent), std::string::npos) << absent << " in " << plainCommand;
 
-    const Options shown = parse({"a.scene", "--depth", "2", "--fov", "33.3", "--background", "0.1,0.2,0.3",
-                                 "--sampler", "stratified", "--seed", "7", "--precision", "fp64",
-                                 "--sphere-test", "naive", "--triangle-test", "mt", "--offset", "fixed",
-                                 "--camera-pos", "1,2,3", "--camera-target", "0.1,0,-1"});
+    const Options shown = parse(
+        {"a.scene",     "--depth",       "2",          "--fov",           "33.3",    "--background",
+         "0.1,0.2,0.3", "--sampler",     "stratified", "--seed",          "7",       "--precision",
+         "fp64",        "--sphere-test", "naive",      "--triangle-test", "mt",      "--offset",
+         "fixed",       "--camera-pos",  "1,2,3",      "--camera-target", "0.1,0,-1"});
     const std::string command = headlessCommand(shown, shown.camera, 64, 48, 4);
     const Options again = parse(words(command));
     EXPECT_EQ(again.outputPath, "OUT.png");

@@ -6,11 +6,11 @@
 // those; and r2's sample s does not depend on n, which is what lets a progressive display
 // converge to the headless --spp N image.
 #include "gpu/context.h"
-#include "render/trace_pipeline.h"
 #include "gpu/resources.h"
 #include "gpu/shader_compiler.h"
 #include "gpu/vk_check.h"
 #include "render/kernel_sources.h"
+#include "render/trace_pipeline.h"
 
 #include <gtest/gtest.h>
 
@@ -47,7 +47,8 @@ class SampleOffsets : public testing::Test {
         createDevice(context_, "");
         ShaderSourceLoader embedded = embeddedShaderLoader();
         spirv_ = compileComputeShader("harness.comp", [embedded](const std::string& name) {
-            return name == "harness.comp" ? std::optional<std::string>(kHarnessSource) : embedded(name);
+            return name == "harness.comp" ? std::optional<std::string>(kHarnessSource)
+                                          : embedded(name);
         });
     }
     static void TearDownTestSuite() {
@@ -56,7 +57,8 @@ class SampleOffsets : public testing::Test {
     }
 
     // The offsets of the queries with this sampler and seed.
-    std::vector<glm::vec2> offsets(Sampler sampler, std::uint32_t seed, const std::vector<Query>& queries) {
+    std::vector<glm::vec2> offsets(Sampler sampler, std::uint32_t seed,
+                                   const std::vector<Query>& queries) {
         const VkDeviceSize queryBytes = queries.size() * sizeof(Query);
         const VkDeviceSize offsetBytes = queries.size() * sizeof(glm::vec2);
         Buffer input = createHostBuffer(context_, queryBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
@@ -66,7 +68,8 @@ class SampleOffsets : public testing::Test {
         VkDescriptorSetLayoutBinding bindings[2] = {
             {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
             {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}};
-        VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+        VkDescriptorSetLayoutCreateInfo setInfo{
+            VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
         setInfo.bindingCount = 2;
         setInfo.pBindings = bindings;
         VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
@@ -96,7 +99,8 @@ class SampleOffsets : public testing::Test {
         pipelineInfo.stage.pSpecializationInfo = &specialization;
         pipelineInfo.layout = layout;
         VkPipeline pipeline = VK_NULL_HANDLE;
-        VK_CHECK(vkCreateComputePipelines(context_.device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline));
+        VK_CHECK(vkCreateComputePipelines(context_.device, VK_NULL_HANDLE, 1, &pipelineInfo,
+                                          nullptr, &pipeline));
         vkDestroyShaderModule(context_.device, module, nullptr);
 
         VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2};
@@ -112,7 +116,8 @@ class SampleOffsets : public testing::Test {
         allocateInfo.pSetLayouts = &setLayout;
         VkDescriptorSet set = VK_NULL_HANDLE;
         VK_CHECK(vkAllocateDescriptorSets(context_.device, &allocateInfo, &set));
-        VkDescriptorBufferInfo buffers[2] = {{input.buffer, 0, queryBytes}, {output.buffer, 0, offsetBytes}};
+        VkDescriptorBufferInfo buffers[2] = {{input.buffer, 0, queryBytes},
+                                             {output.buffer, 0, offsetBytes}};
         VkWriteDescriptorSet writes[2] = {};
         for (std::uint32_t i = 0; i < 2; ++i) {
             writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -128,14 +133,17 @@ class SampleOffsets : public testing::Test {
         params.counts.w = seed;
         runOneTimeCommands(context_, [&](VkCommandBuffer commands) {
             vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-            vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, 1, &set, 0, nullptr);
-            vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof params, &params);
+            vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, 1, &set, 0,
+                                    nullptr);
+            vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof params,
+                               &params);
             vkCmdDispatch(commands, std::uint32_t((queries.size() + 63) / 64), 1, 1);
             VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
             barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
             barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-            vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT,
-                                 0, 1, &barrier, 0, nullptr, 0, nullptr);
+            vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                                 VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &barrier, 0, nullptr, 0,
+                                 nullptr);
         });
         std::vector<glm::vec2> result(queries.size());
         std::memcpy(result.data(), output.mapped, offsetBytes);
@@ -183,13 +191,15 @@ TEST_F(SampleOffsets, EveryOffsetLiesInsideThePixel) {
 
 TEST_F(SampleOffsets, GridAndStratifiedPutOneSampleInEachCell) {
     for (Sampler sampler : {Sampler::Grid, Sampler::Stratified}) {
-        for (auto [n, columns, rows] : {std::tuple{16u, 4u, 4u}, std::tuple{12u, 4u, 3u}, std::tuple{7u, 7u, 1u}}) {
+        for (auto [n, columns, rows] :
+             {std::tuple{16u, 4u, 4u}, std::tuple{12u, 4u, 3u}, std::tuple{7u, 7u, 1u}}) {
             std::vector<Query> queries = allSamples(n);
             std::vector<glm::vec2> result = offsets(sampler, 0, queries);
             for (std::size_t first = 0; first < queries.size(); first += n) {
                 std::set<std::pair<int, int>> cells;
                 for (std::size_t i = first; i < first + n; ++i)
-                    cells.insert({int(result[i].x * float(columns)), int(result[i].y * float(rows))});
+                    cells.insert(
+                        {int(result[i].x * float(columns)), int(result[i].y * float(rows))});
                 EXPECT_EQ(cells.size(), n) << choiceName(samplerNames(), sampler) << " n " << n;
             }
             if (sampler == Sampler::Grid)
@@ -208,7 +218,8 @@ TEST_F(SampleOffsets, TheSeedMovesJitteredSamplesOnly) {
     for (Sampler sampler : {Sampler::Stratified, Sampler::R2}) {
         std::vector<glm::vec2> a = offsets(sampler, 0, queries), b = offsets(sampler, 99, queries);
         std::size_t moved = 0;
-        for (std::size_t i = 0; i < a.size(); ++i) moved += a[i] != b[i];
+        for (std::size_t i = 0; i < a.size(); ++i)
+            moved += a[i] != b[i];
         EXPECT_EQ(moved, a.size()) << choiceName(samplerNames(), sampler);
         EXPECT_EQ(offsets(sampler, 99, queries), b) << "the same seed gives the same samples";
     }
@@ -218,13 +229,16 @@ TEST_F(SampleOffsets, R2SampleDoesNotDependOnTheSampleCount) {
     // Sample s of a 4-sample pixel is sample s of the same pixel at 16 and at 1000 samples.
     std::vector<Query> queries;
     for (std::uint32_t n : {4u, 16u, 1000u})
-        for (std::uint32_t s = 0; s < 4; ++s) queries.push_back({5, 9, s, n});
+        for (std::uint32_t s = 0; s < 4; ++s)
+            queries.push_back({5, 9, s, n});
     std::vector<glm::vec2> result = offsets(Sampler::R2, 7, queries);
-    for (std::size_t i = 4; i < result.size(); ++i) EXPECT_EQ(result[i], result[i % 4]) << i;
+    for (std::size_t i = 4; i < result.size(); ++i)
+        EXPECT_EQ(result[i], result[i % 4]) << i;
     // And r2's first samples spread out: no two of the first 16 closer than a fifth of
     // the 4 x 4 grid's spacing (toroidal distance, as the rotation wraps).
     std::vector<Query> sixteen;
-    for (std::uint32_t s = 0; s < 16; ++s) sixteen.push_back({5, 9, s, 16});
+    for (std::uint32_t s = 0; s < 16; ++s)
+        sixteen.push_back({5, 9, s, 16});
     std::vector<glm::vec2> points = offsets(Sampler::R2, 7, sixteen);
     for (std::size_t i = 0; i < points.size(); ++i)
         for (std::size_t j = i + 1; j < points.size(); ++j) {

@@ -1,7 +1,7 @@
 // The scene parser from strings: every accepted form, every error with its exact
 // message, the warnings, and the sample scenes of the classic assignment.
-#include "scene/scene_loader.h"
 #include "scene/scene_lexer.h"
+#include "scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 
@@ -727,8 +727,8 @@ TEST(SceneText, BinaryCheckFindsEveryByteAtEveryOffset) {
     // Multi-byte characters across a word boundary are text.
     for (std::size_t at = 0; at < 12; ++at)
         EXPECT_FALSE(scene_lexer::binaryReason(std::string(at, 'a') +
-                                              "\xC3\xA8\xE2\x82\xAC\xF0\x9F\x98\x80" +
-                                              std::string(9, 'b'))
+                                               "\xC3\xA8\xE2\x82\xAC\xF0\x9F\x98\x80" +
+                                               std::string(9, 'b'))
                          .has_value());
 }
 

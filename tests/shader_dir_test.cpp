@@ -4,8 +4,8 @@
 // notices saves of a file and of a folder.
 #include "base/file_watch.h"
 #include "gpu/shader_compiler.h"
-#include "test_support.h"
 #include "render/kernel_sources.h"
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,9 @@
 
 namespace {
 
-std::filesystem::path showcase() { return std::filesystem::path(PROJECT_SCENES_DIR) / "showcase.scene"; }
+std::filesystem::path showcase() {
+    return std::filesystem::path(PROJECT_SCENES_DIR) / "showcase.scene";
+}
 
 void appendText(const std::filesystem::path& path, const std::string& text) {
     std::ofstream file(path, std::ios::app);
@@ -37,9 +39,11 @@ TEST(ShaderDirectory, RendersTheSameBytesAsTheEmbeddedKernel) {
     ProcessResult dump = runRaytracer({"--dump-shaders", (dir / "shaders").string()});
     ASSERT_EQ(dump.exitCode, 0) << dump.err;
     const std::vector<std::string> size = {"--width", "64", "--height", "48", "--spp", "2"};
-    std::vector<std::string> embedded = {showcase().string(), "-o", (dir / "embedded.png").string()};
-    std::vector<std::string> folder = {showcase().string(), "-o", (dir / "folder.png").string(), "--shader-dir",
-                                       (dir / "shaders").string(), "--validate"};
+    std::vector<std::string> embedded = {showcase().string(), "-o",
+                                         (dir / "embedded.png").string()};
+    std::vector<std::string> folder = {showcase().string(),           "-o",
+                                       (dir / "folder.png").string(), "--shader-dir",
+                                       (dir / "shaders").string(),    "--validate"};
     embedded.insert(embedded.end(), size.begin(), size.end());
     folder.insert(folder.end(), size.begin(), size.end());
     ASSERT_EQ(runRaytracer(embedded).exitCode, 0);
@@ -53,22 +57,27 @@ TEST(ShaderDirectory, CompileErrorNamesTheFolderFileAndLine) {
     const std::filesystem::path dir = freshOutputDir("shader-dir/error");
     writeEmbeddedShaders(dir / "shaders");
     appendText(dir / "shaders" / "shade.glsl", "\nnot glsl at all\n");
-    ProcessResult run = runRaytracer({showcase().string(), "-o", (dir / "out.png").string(), "--width", "16",
-                                      "--height", "16", "--shader-dir", (dir / "shaders").string()});
+    ProcessResult run =
+        runRaytracer({showcase().string(), "-o", (dir / "out.png").string(), "--width", "16",
+                      "--height", "16", "--shader-dir", (dir / "shaders").string()});
     EXPECT_EQ(run.exitCode, 1);
-    EXPECT_NE(run.err.find("ERROR: " + (dir / "shaders" / "shade.glsl").string() + ":"), std::string::npos)
+    EXPECT_NE(run.err.find("ERROR: " + (dir / "shaders" / "shade.glsl").string() + ":"),
+              std::string::npos)
         << run.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
 }
 
 TEST(ShaderDirectory, MissingFolderIsAnError) {
     const std::filesystem::path dir = freshOutputDir("shader-dir/missing");
-    ProcessResult run = runRaytracer({showcase().string(), "-o", (dir / "out.png").string(), "--width", "16",
-                                      "--height", "16", "--shader-dir", (dir / "nowhere").string()});
+    ProcessResult run =
+        runRaytracer({showcase().string(), "-o", (dir / "out.png").string(), "--width", "16",
+                      "--height", "16", "--shader-dir", (dir / "nowhere").string()});
     EXPECT_EQ(run.exitCode, 2);
-    EXPECT_NE(run.err.find("error: --shader-dir expects a folder holding trace.comp (see --dump-shaders), got '" +
-                           (dir / "nowhere").string() + "'"),
-              std::string::npos)
+    EXPECT_NE(
+        run.err.find(
+            "error: --shader-dir expects a folder holding trace.comp (see --dump-shaders), got '" +
+            (dir / "nowhere").string() + "'"),
+        std::string::npos)
         << run.err;
 }
 
@@ -106,7 +115,8 @@ TEST(FileWatch, SameSizeRewriteIsNoticedThroughTheModificationTime) {
     FileWatch watch = watchPath(dir / "a.scene");
     std::this_thread::sleep_for(std::chrono::milliseconds(20)); // past any coarse timestamp
     writeTextFile(dir / "a.scene", "xyz");
-    std::filesystem::last_write_time(dir / "a.scene", std::filesystem::file_time_type::clock::now());
+    std::filesystem::last_write_time(dir / "a.scene",
+                                     std::filesystem::file_time_type::clock::now());
     EXPECT_TRUE(pathChanged(watch));
 }
 

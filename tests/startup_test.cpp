@@ -214,7 +214,8 @@ TEST_F(StartupCache, PrecisionsAndSpecializationsKeepSeparateFiles) {
     fs::path cache = filledCache();
     ASSERT_EQ(filesIn(cache).size(), 2u);
     ASSERT_EQ(render(dir_ / "unused-home", "fp64-uncached", {"--no-cache", "--precision", "fp64"})
-                  .exitCode, 0);
+                  .exitCode,
+              0);
     ProcessResult fp64 = render(dir_ / "home", "fp64", {"--precision", "fp64"});
     ASSERT_EQ(fp64.exitCode, 0) << fp64.err;
     EXPECT_EQ(fp64.err.find("note:"), std::string::npos) << fp64.err;
@@ -235,9 +236,11 @@ TEST_F(StartupCache, PrecisionsAndSpecializationsKeepSeparateFiles) {
 
     const std::vector<fs::path> files = filesIn(cache);
     std::vector<fs::file_time_type> times;
-    for (const fs::path& file : files) times.push_back(fs::last_write_time(file));
+    for (const fs::path& file : files)
+        times.push_back(fs::last_write_time(file));
     for (const auto& [name, flags] : std::vector<std::pair<std::string, std::vector<std::string>>>{
-             {"fp32-warm", {}}, {"fp64-warm", {"--precision", "fp64"}},
+             {"fp32-warm", {}},
+             {"fp64-warm", {"--precision", "fp64"}},
              {"naive-warm", {"--sphere-test", "naive"}}}) {
         ProcessResult warm = render(dir_ / "home", name, flags);
         ASSERT_EQ(warm.exitCode, 0) << warm.err;

@@ -20,9 +20,10 @@ std::string readWholeFile(const std::filesystem::path& path) {
     return text.str();
 }
 
-ProcessResult runRaytracerIn(const std::vector<std::string>& args, int timeoutSeconds,
-                             const std::filesystem::path& workingDirectory,
-                             const std::function<void(pid_t, const std::filesystem::path&)>& duringRun);
+ProcessResult
+runRaytracerIn(const std::vector<std::string>& args, int timeoutSeconds,
+               const std::filesystem::path& workingDirectory,
+               const std::function<void(pid_t, const std::filesystem::path&)>& duringRun);
 
 } // namespace
 
@@ -31,26 +32,29 @@ ProcessResult runRaytracer(const std::vector<std::string>& args, int timeoutSeco
     return runRaytracerIn(args, timeoutSeconds, workingDirectory, {});
 }
 
-ProcessResult runRaytracerWhile(const std::vector<std::string>& args,
-                                const std::function<void(pid_t, const std::filesystem::path&)>& duringRun,
-                                int timeoutSeconds) {
+ProcessResult
+runRaytracerWhile(const std::vector<std::string>& args,
+                  const std::function<void(pid_t, const std::filesystem::path&)>& duringRun,
+                  int timeoutSeconds) {
     return runRaytracerIn(args, timeoutSeconds, {}, duringRun);
 }
 
 namespace {
 
-ProcessResult runRaytracerIn(const std::vector<std::string>& args, int timeoutSeconds,
-                             const std::filesystem::path& workingDirectory,
-                             const std::function<void(pid_t, const std::filesystem::path&)>& duringRun) {
+ProcessResult
+runRaytracerIn(const std::vector<std::string>& args, int timeoutSeconds,
+               const std::filesystem::path& workingDirectory,
+               const std::function<void(pid_t, const std::filesystem::path&)>& duringRun) {
     static int runCount = 0;
-    std::filesystem::path captureDir = freshOutputDir("process-" + std::to_string(getpid()) + "-" +
-                                                      std::to_string(runCount++));
+    std::filesystem::path captureDir =
+        freshOutputDir("process-" + std::to_string(getpid()) + "-" + std::to_string(runCount++));
     std::filesystem::path outPath = captureDir / "stdout.txt", errPath = captureDir / "stderr.txt";
 
     std::vector<std::string> argv = {RAYTRACER_BINARY};
     argv.insert(argv.end(), args.begin(), args.end());
     std::vector<char*> argvPointers;
-    for (std::string& arg : argv) argvPointers.push_back(arg.data());
+    for (std::string& arg : argv)
+        argvPointers.push_back(arg.data());
     argvPointers.push_back(nullptr);
 
     pid_t child = fork();
@@ -99,7 +103,8 @@ std::vector<std::filesystem::path> sceneFilesIn(const std::filesystem::path& fol
     std::vector<std::filesystem::path> scenes;
     if (!std::filesystem::is_directory(folder)) return scenes;
     for (const auto& entry : std::filesystem::directory_iterator(folder))
-        if (entry.is_regular_file() && entry.path().extension() == ".scene") scenes.push_back(entry.path());
+        if (entry.is_regular_file() && entry.path().extension() == ".scene")
+            scenes.push_back(entry.path());
     std::sort(scenes.begin(), scenes.end());
     return scenes;
 }

@@ -2,8 +2,8 @@
 // scenes, and comparing its images with the CPU reference.
 #pragma once
 
-#include "image_compare.h"
 #include "base/image_io.h"
+#include "image_compare.h"
 #include "reference_renderer.h"
 
 #include <filesystem>
@@ -27,9 +27,10 @@ ProcessResult runRaytracer(const std::vector<std::string>& args, int timeoutSeco
 
 // Like runRaytracer, and calls duringRun(pid, stderr file) once in this thread while the
 // process runs (to send it a signal, for example); the process is then waited for.
-ProcessResult runRaytracerWhile(const std::vector<std::string>& args,
-                                const std::function<void(pid_t, const std::filesystem::path&)>& duringRun,
-                                int timeoutSeconds = 300);
+ProcessResult
+runRaytracerWhile(const std::vector<std::string>& args,
+                  const std::function<void(pid_t, const std::filesystem::path&)>& duringRun,
+                  int timeoutSeconds = 300);
 
 // A fresh, empty folder under the build tree for one test's files.
 std::filesystem::path freshOutputDir(const std::string& name);

@@ -4,8 +4,8 @@
 // line elsewhere).
 #include "test_support.h"
 
-#include "shared.h"
 #include "render/region_planner.h"
+#include "shared.h"
 
 #include <gtest/gtest.h>
 

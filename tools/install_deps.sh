@@ -13,6 +13,7 @@ packages=(
     googletest libgtest-dev
     xvfb xauth x11-utils x11-apps xdotool
     clang libclang-rt-14-dev  # make check-hardening: libFuzzer and the sanitizer build
+    clang-format              # tools/format.sh --check, run by the suite
 )
 # Optional: the benchmark only. Raytracer and the tests never need them.
 bench_packages=(libembree-dev python3-matplotlib)

@@ -31,15 +31,19 @@ std::uint64_t pathSignature(const std::filesystem::path& path) {
         return mixFile(path, 1);
     }
     std::vector<std::filesystem::path> files;
-    for (std::filesystem::directory_iterator it(path, error), end; !error && it != end; it.increment(error))
+    for (std::filesystem::directory_iterator it(path, error), end; !error && it != end;
+         it.increment(error))
         if (it->is_regular_file(error)) files.push_back(it->path());
     std::sort(files.begin(), files.end()); // the same signature whatever the listing order
     std::uint64_t key = 1;
-    for (const std::filesystem::path& file : files) key = mixFile(file, key);
+    for (const std::filesystem::path& file : files)
+        key = mixFile(file, key);
     return key;
 }
 
-FileWatch watchPath(const std::filesystem::path& path) { return {path, pathSignature(path)}; }
+FileWatch watchPath(const std::filesystem::path& path) {
+    return {path, pathSignature(path)};
+}
 
 bool pathChanged(FileWatch& watch) {
     const std::uint64_t now = pathSignature(watch.path);

@@ -51,7 +51,8 @@ glm::dvec3 parseVector(const std::string& flag, const std::string& text) {
         if (comma == std::string::npos) break;
         start = comma + 1;
     }
-    if (values.size() != 3) throw UsageError(flag + " expects three numbers X,Y,Z, got '" + text + "'");
+    if (values.size() != 3)
+        throw UsageError(flag + " expects three numbers X,Y,Z, got '" + text + "'");
     return {values[0], values[1], values[2]};
 }
 
@@ -61,7 +62,10 @@ T parseChoice(const std::string& flag, const std::string& text, const ChoiceName
     std::string expected;
     for (std::size_t i = 0; i < names.size(); ++i) {
         if (names[i].first == text) return names[i].second;
-        expected += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + std::string(names[i].first);
+        expected += (i == 0                  ? ""
+                     : i + 1 == names.size() ? " or "
+                                             : ", ") +
+                    std::string(names[i].first);
     }
     throw UsageError(flag + " expects " + expected + ", got '" + text + "'");
 }
@@ -69,13 +73,20 @@ T parseChoice(const std::string& flag, const std::string& text, const ChoiceName
 // Parses one of the kernel's method and precision flags into kernel; false if arg is none.
 bool parseKernelOption(const std::string& arg, const std::function<const std::string&()>& value,
                        KernelChoices& kernel) {
-    if (arg == "--sampler") kernel.sampler = parseChoice(arg, value(), samplerNames());
-    else if (arg == "--seed") kernel.seed = parseCount(arg, value(), 0, 4294967295u);
-    else if (arg == "--precision") kernel.precision = parseChoice(arg, value(), precisionNames());
-    else if (arg == "--sphere-test") kernel.sphereTest = parseChoice(arg, value(), sphereTestNames());
-    else if (arg == "--triangle-test") kernel.triangleTest = parseChoice(arg, value(), triangleTestNames());
-    else if (arg == "--offset") kernel.offset = parseChoice(arg, value(), rayOffsetNames());
-    else return false;
+    if (arg == "--sampler")
+        kernel.sampler = parseChoice(arg, value(), samplerNames());
+    else if (arg == "--seed")
+        kernel.seed = parseCount(arg, value(), 0, 4294967295u);
+    else if (arg == "--precision")
+        kernel.precision = parseChoice(arg, value(), precisionNames());
+    else if (arg == "--sphere-test")
+        kernel.sphereTest = parseChoice(arg, value(), sphereTestNames());
+    else if (arg == "--triangle-test")
+        kernel.triangleTest = parseChoice(arg, value(), triangleTestNames());
+    else if (arg == "--offset")
+        kernel.offset = parseChoice(arg, value(), rayOffsetNames());
+    else
+        return false;
     return true;
 }
 
@@ -111,9 +122,13 @@ std::string usageText() {
            "  --bench N             render N frames headless after a warm-up, print JSON timings\n"
            "  --device NAME|INDEX   use this Vulkan device (default: a real GPU before a CPU one)\n"
            "  --accel auto|bvh|none  bounding volume hierarchy, or test every primitive (default\n"
-           "                        auto: the hierarchy from " + std::to_string(kBvhAutoThreshold) + " primitives up)\n"
-           "  --validate            enable the Khronos validation layer; any message fails the run\n"
-           "  --no-cache            neither read nor write the shader cache ($XDG_CACHE_HOME/raytracer)\n"
+           "                        auto: the hierarchy from " +
+           std::to_string(kBvhAutoThreshold) +
+           " primitives up)\n"
+           "  --validate            enable the Khronos validation layer; any message fails the "
+           "run\n"
+           "  --no-cache            neither read nor write the shader cache "
+           "($XDG_CACHE_HOME/raytracer)\n"
            "  --progress            report progress on stderr even for a render under a second\n"
            "  --window              show a window or fail; never fall back to a headless PNG\n"
            "  --shader-dir DIR      compile the kernel from DIR's sources (trace.comp and its\n"
@@ -171,8 +186,9 @@ Options parseOptions(int argc, const char* const* argv) {
             options.shaderDirectory = value();
             std::error_code error;
             if (!std::filesystem::is_regular_file(options.shaderDirectory / "trace.comp", error))
-                throw UsageError("--shader-dir expects a folder holding trace.comp (see --dump-shaders), got '" +
-                                 options.shaderDirectory.string() + "'");
+                throw UsageError(
+                    "--shader-dir expects a folder holding trace.comp (see --dump-shaders), got '" +
+                    options.shaderDirectory.string() + "'");
         } else if (arg == "--dump-shaders") {
             options.dumpShadersTo = value();
             if (options.dumpShadersTo.empty()) throw UsageError("--dump-shaders expects a folder");
@@ -184,10 +200,14 @@ Options parseOptions(int argc, const char* const* argv) {
             options.device = value();
         } else if (arg == "--accel") {
             const std::string& mode = value();
-            if (mode == "auto") options.acceleration = Acceleration::Auto;
-            else if (mode == "bvh") options.acceleration = Acceleration::Bvh;
-            else if (mode == "none") options.acceleration = Acceleration::None;
-            else throw UsageError("--accel expects auto, bvh or none, got '" + mode + "'");
+            if (mode == "auto")
+                options.acceleration = Acceleration::Auto;
+            else if (mode == "bvh")
+                options.acceleration = Acceleration::Bvh;
+            else if (mode == "none")
+                options.acceleration = Acceleration::None;
+            else
+                throw UsageError("--accel expects auto, bvh or none, got '" + mode + "'");
         } else if (arg == "--validate") {
             options.validate = true;
         } else if (arg == "--no-cache") {
@@ -214,13 +234,16 @@ Options parseOptions(int argc, const char* const* argv) {
     }
     // A target given without a position looks from the origin; a position alone keeps
     // looking down -z from there.
-    if (!options.cameraTargetGiven) options.camera.target = options.camera.position + glm::dvec3(0.0, 0.0, -1.0);
-    if (std::string problem = cameraPoseProblem(options.camera); !problem.empty()) throw UsageError(problem);
+    if (!options.cameraTargetGiven)
+        options.camera.target = options.camera.position + glm::dvec3(0.0, 0.0, -1.0);
+    if (std::string problem = cameraPoseProblem(options.camera); !problem.empty())
+        throw UsageError(problem);
     if (options.scenePath.empty() && !options.showHelp && options.dumpShadersTo.empty())
         throw UsageError("no scene file given (see --help)");
     if (options.forceWindow && (!options.outputPath.empty() || options.benchFrames > 0))
         throw UsageError("--window cannot be combined with -o or --bench, which render headless");
     if (options.benchWindowFrames > 0 && (!options.outputPath.empty() || options.benchFrames > 0))
-        throw UsageError("--bench-window cannot be combined with -o or --bench, which render headless");
+        throw UsageError(
+            "--bench-window cannot be combined with -o or --bench, which render headless");
     return options;
 }

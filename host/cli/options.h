@@ -2,8 +2,8 @@
 #pragma once
 
 #include "render/bvh.h"
-#include "scene/camera.h"
 #include "render/kernel_choices.h"
+#include "scene/camera.h"
 
 #include <glm/glm.hpp>
 
@@ -26,18 +26,21 @@ struct Options {
     bool validate = false;         // --validate: Khronos layer on, any message fails the run
     Acceleration acceleration = Acceleration::Auto; // --accel auto|bvh|none
     bool showHelp = false;
-    bool useCache = true;       // --no-cache: no shader or pipeline cache on disk
-    std::uint32_t regionSide = 0; // --region-size N (hidden, for tests): fixed N x N submissions; 0 adapts
-    bool progress = false;      // --progress: report progress even for a short render
-    bool forceWindow = false;   // --window: a window or an error, never the headless fallback
+    bool useCache = true; // --no-cache: no shader or pipeline cache on disk
+    std::uint32_t regionSide =
+        0;                 // --region-size N (hidden, for tests): fixed N x N submissions; 0 adapts
+    bool progress = false; // --progress: report progress even for a short render
+    bool forceWindow = false;        // --window: a window or an error, never the headless fallback
     bool redrawContinuously = false; // --redraw-continuously (hidden, for the soak test)
-    bool samplesGiven = false;  // --spp was given: the window refines up to it, not to its cap
-    CameraPose camera;          // --camera-pos, --camera-target, --camera-up (default: the camera of docs/model.md)
+    bool samplesGiven = false;       // --spp was given: the window refines up to it, not to its cap
+    CameraPose
+        camera; // --camera-pos, --camera-target, --camera-up (default: the camera of docs/model.md)
     bool cameraTargetGiven = false; // else the window may move the orbit pivot along the view
     std::filesystem::path shaderDirectory; // --shader-dir: compile (and watch) these sources
     std::filesystem::path dumpShadersTo;   // --dump-shaders DIR: write the embedded sources, exit
     std::uint32_t benchWindowFrames = 0;   // --bench-window N: time N progressive frames, exit
-    KernelChoices kernel; // --sampler, --seed, --precision, --sphere-test, --triangle-test, --offset
+    KernelChoices
+        kernel; // --sampler, --seed, --precision, --sphere-test, --triangle-test, --offset
     bool generalKernel = false; // --general-kernel (hidden, for tools/kernel_costs)
 };
 

@@ -13,9 +13,10 @@ namespace {
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 std::atomic<std::uint32_t> validationMessages{0};
 
-VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(
-    VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT,
-    const VkDebugUtilsMessengerCallbackDataEXT* data, void*) {
+VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                   VkDebugUtilsMessageTypeFlagsEXT,
+                                                   const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                   void*) {
     const char* level =
         (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) ? "error" : "warning";
     std::fprintf(stderr, "validation %s: %s\n", level, data->pMessage);
@@ -28,28 +29,39 @@ bool hasLayer(const char* name) {
     vkEnumerateInstanceLayerProperties(&count, nullptr);
     std::vector<VkLayerProperties> layers(count);
     vkEnumerateInstanceLayerProperties(&count, layers.data());
-    return std::any_of(layers.begin(), layers.end(),
-                       [&](const VkLayerProperties& layer) { return !std::strcmp(layer.layerName, name); });
+    return std::any_of(layers.begin(), layers.end(), [&](const VkLayerProperties& layer) {
+        return !std::strcmp(layer.layerName, name);
+    });
 }
 
 const char* deviceTypeName(VkPhysicalDeviceType type) {
     switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "CPU";
-    default: return "other";
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+        return "discrete GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+        return "integrated GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+        return "virtual GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+        return "CPU";
+    default:
+        return "other";
     }
 }
 
 // Higher is better when no device is named.
 int deviceTypeRank(VkPhysicalDeviceType type) {
     switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 4;
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 3;
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 1;
-    default: return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+        return 4;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+        return 3;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+        return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+        return 1;
+    default:
+        return 0;
     }
 }
 
@@ -66,10 +78,11 @@ Candidate examine(VkPhysicalDevice device, VkSurfaceKHR surface) {
     Candidate candidate{device, {}, 0, {}};
     vkGetPhysicalDeviceProperties(device, &candidate.properties);
     if (candidate.properties.apiVersion < VK_API_VERSION_1_2) {
-        candidate.rejection = "supports only Vulkan " +
-                              std::to_string(VK_API_VERSION_MAJOR(candidate.properties.apiVersion)) +
-                              "." + std::to_string(VK_API_VERSION_MINOR(candidate.properties.apiVersion)) +
-                              ", 1.2 is needed";
+        candidate.rejection =
+            "supports only Vulkan " +
+            std::to_string(VK_API_VERSION_MAJOR(candidate.properties.apiVersion)) + "." +
+            std::to_string(VK_API_VERSION_MINOR(candidate.properties.apiVersion)) +
+            ", 1.2 is needed";
         return candidate;
     }
     std::uint32_t count = 0;
@@ -103,34 +116,40 @@ std::string listCandidates(const std::vector<Candidate>& candidates) {
     return list;
 }
 
-const Candidate& chooseCandidate(const std::vector<Candidate>& candidates, const std::string& request) {
+const Candidate& chooseCandidate(const std::vector<Candidate>& candidates,
+                                 const std::string& request) {
     if (!request.empty()) {
         bool isIndex = std::all_of(request.begin(), request.end(), ::isdigit);
         for (std::size_t i = 0; i < candidates.size(); ++i) {
             const Candidate& c = candidates[i];
-            bool matches = isIndex ? std::to_string(i) == request
-                                   : std::string(c.properties.deviceName).find(request) != std::string::npos;
+            bool matches =
+                isIndex ? std::to_string(i) == request
+                        : std::string(c.properties.deviceName).find(request) != std::string::npos;
             if (!matches) continue;
             if (!c.rejection.empty())
-                throw std::runtime_error("--device " + request + " names " + c.properties.deviceName +
+                throw std::runtime_error("--device " + request + " names " +
+                                         c.properties.deviceName +
                                          ", which cannot be used: " + c.rejection);
             return c;
         }
-        throw std::runtime_error("--device " + request + " matches no Vulkan device. Found:" +
-                                 listCandidates(candidates));
+        throw std::runtime_error("--device " + request +
+                                 " matches no Vulkan device. Found:" + listCandidates(candidates));
     }
     const Candidate* best = nullptr;
     for (const Candidate& c : candidates)
-        if (c.rejection.empty() &&
-            (!best || deviceTypeRank(c.properties.deviceType) > deviceTypeRank(best->properties.deviceType)))
+        if (c.rejection.empty() && (!best || deviceTypeRank(c.properties.deviceType) >
+                                                 deviceTypeRank(best->properties.deviceType)))
             best = &c;
-    if (!best) throw std::runtime_error("no usable Vulkan device. Found:" + listCandidates(candidates));
+    if (!best)
+        throw std::runtime_error("no usable Vulkan device. Found:" + listCandidates(candidates));
     return *best;
 }
 
 } // namespace
 
-std::uint32_t validationMessageCount() { return validationMessages.load(); }
+std::uint32_t validationMessageCount() {
+    return validationMessages.load();
+}
 
 void createInstance(Context& context, const std::vector<const char*>& extensions, bool validate) {
     std::vector<const char*> enabledExtensions = extensions;
@@ -147,7 +166,8 @@ void createInstance(Context& context, const std::vector<const char*>& extensions
     application.pApplicationName = "Raytracer";
     application.apiVersion = VK_API_VERSION_1_2;
 
-    VkDebugUtilsMessengerCreateInfoEXT messengerInfo{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    VkDebugUtilsMessengerCreateInfoEXT messengerInfo{
+        VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
     messengerInfo.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
                                     VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
     messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
@@ -165,8 +185,9 @@ void createInstance(Context& context, const std::vector<const char*>& extensions
     if (validate) info.pNext = &messengerInfo;
     VkResult result = vkCreateInstance(&info, nullptr, &context.instance);
     if (result == VK_ERROR_INCOMPATIBLE_DRIVER)
-        throw std::runtime_error("no Vulkan driver found (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER); "
-                                 "install one, e.g. Debian's mesa-vulkan-drivers");
+        throw std::runtime_error(
+            "no Vulkan driver found (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER); "
+            "install one, e.g. Debian's mesa-vulkan-drivers");
     VK_CHECK(result);
 
     if (validate) {
@@ -193,10 +214,12 @@ void createDevice(Context& context, const std::string& deviceRequest, VkSurfaceK
     std::vector<VkPhysicalDevice> devices(count);
     VK_CHECK(vkEnumeratePhysicalDevices(context.instance, &count, devices.data()));
     if (devices.empty())
-        throw std::runtime_error("the Vulkan loader found no device; install a driver, e.g. Debian's "
-                                 "mesa-vulkan-drivers for lavapipe");
+        throw std::runtime_error(
+            "the Vulkan loader found no device; install a driver, e.g. Debian's "
+            "mesa-vulkan-drivers for lavapipe");
     std::vector<Candidate> candidates;
-    for (VkPhysicalDevice device : devices) candidates.push_back(examine(device, surface));
+    for (VkPhysicalDevice device : devices)
+        candidates.push_back(examine(device, surface));
     const Candidate& chosen = chooseCandidate(candidates, deviceRequest);
 
     context.physicalDevice = chosen.device;

@@ -47,8 +47,9 @@ Buffer createBuffer(const Context& context, VkDeviceSize size, VkBufferUsageFlag
 } // namespace
 
 Buffer createHostBuffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage) {
-    Buffer buffer = createBuffer(context, size, usage,
-                                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    Buffer buffer =
+        createBuffer(context, size, usage,
+                     VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
     VK_CHECK(vkMapMemory(context.device, buffer.memory, 0, VK_WHOLE_SIZE, 0, &buffer.mapped));
     return buffer;
 }
@@ -73,8 +74,8 @@ void destroyBuffer(const Context& context, Buffer& buffer) {
     buffer = Buffer{};
 }
 
-Image createImage(const Context& context, std::uint32_t width, std::uint32_t height, VkFormat format,
-                  VkImageUsageFlags usage) {
+Image createImage(const Context& context, std::uint32_t width, std::uint32_t height,
+                  VkFormat format, VkImageUsageFlags usage) {
     Image image;
     image.format = format;
     image.width = width;
@@ -112,7 +113,8 @@ void destroyImage(const Context& context, Image& image) {
     image = Image{};
 }
 
-void runOneTimeCommands(const Context& context, const std::function<void(VkCommandBuffer)>& record) {
+void runOneTimeCommands(const Context& context,
+                        const std::function<void(VkCommandBuffer)>& record) {
     VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     allocateInfo.commandPool = context.commandPool;
     allocateInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
@@ -146,5 +148,6 @@ void transitionImage(VkCommandBuffer commands, VkImage image, VkImageLayout from
     barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     barrier.image = image;
     barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdPipelineBarrier(commands, sourceStage, destinationStage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+    vkCmdPipelineBarrier(commands, sourceStage, destinationStage, 0, 0, nullptr, 0, nullptr, 1,
+                         &barrier);
 }

@@ -32,8 +32,8 @@ Buffer createDeviceBuffer(const Context& context, const void* data, VkDeviceSize
 void destroyBuffer(const Context& context, Buffer& buffer);
 
 // A 2D image in device memory with a view covering it.
-Image createImage(const Context& context, std::uint32_t width, std::uint32_t height, VkFormat format,
-                  VkImageUsageFlags usage);
+Image createImage(const Context& context, std::uint32_t width, std::uint32_t height,
+                  VkFormat format, VkImageUsageFlags usage);
 
 void destroyImage(const Context& context, Image& image);
 

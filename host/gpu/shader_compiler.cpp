@@ -6,8 +6,8 @@
 
 #include <fstream>
 #include <memory>
-#include <sstream>
 #include <mutex>
+#include <sstream>
 
 namespace {
 

@@ -45,7 +45,8 @@ const char* vkResultName(VkResult result) {
 }
 
 void throwVulkanError(VkResult result, const char* call, const char* file, int line) {
-    std::string where = std::filesystem::path(file).filename().string() + ":" + std::to_string(line);
+    std::string where =
+        std::filesystem::path(file).filename().string() + ":" + std::to_string(line);
     std::string message = std::string("Vulkan call failed with ") + vkResultName(result) + " (" +
                           std::to_string(result) + ") at " + where + ": " + call;
     if (result == VK_ERROR_DEVICE_LOST)

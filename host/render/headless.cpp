@@ -1,7 +1,7 @@
 #include "render/headless.h"
 
-#include "render/interrupt.h"
 #include "gpu/vk_check.h"
+#include "render/interrupt.h"
 
 #include <algorithm>
 #include <chrono>

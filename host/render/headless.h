@@ -4,8 +4,8 @@
 
 #include "base/image_io.h"
 #include "render/progress.h"
-#include "render/renderer.h"
 #include "render/region_planner.h"
+#include "render/renderer.h"
 
 struct HeadlessTarget {
     Buffer readbackBuffer; // host-visible copy of the output image, tightly packed RGBA8

@@ -11,12 +11,15 @@ namespace {
 std::atomic<int> receivedSignal{0};
 static_assert(std::atomic<int>::is_always_lock_free);
 
-extern "C" void onSignal(int signalNumber) { receivedSignal.store(signalNumber); }
+extern "C" void onSignal(int signalNumber) {
+    receivedSignal.store(signalNumber);
+}
 
 } // namespace
 
 Interrupted::Interrupted(int number)
-    : std::runtime_error(std::string("interrupted by ") + (number == SIGINT ? "SIGINT (Ctrl-C)" : "SIGTERM") +
+    : std::runtime_error(std::string("interrupted by ") +
+                         (number == SIGINT ? "SIGINT (Ctrl-C)" : "SIGTERM") +
                          ": stopped after the current submission, nothing written"),
       signalNumber(number) {}
 
@@ -30,7 +33,9 @@ void installInterruptHandlers() {
     sigaction(SIGTERM, &action, nullptr);
 }
 
-int interruptSignal() { return receivedSignal.load(); }
+int interruptSignal() {
+    return receivedSignal.load();
+}
 
 void throwIfInterrupted() {
     if (int number = receivedSignal.load()) throw Interrupted(number);

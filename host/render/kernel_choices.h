@@ -17,10 +17,10 @@ enum class Sampler : std::uint32_t {
     Stratified = SAMPLER_STRATIFIED, // one jittered sample per cell of that grid
     R2 = SAMPLER_R2, // Roberts' R2 sequence, rotated per pixel: sample s does not depend on N
 };
-enum class Precision { Fp32, Fp64 };                // the geometric arithmetic's type
-enum class SphereTest { Naive, Stable };            // textbook quadratic, or Ray Tracing Gems ch. 7
+enum class Precision { Fp32, Fp64 };     // the geometric arithmetic's type
+enum class SphereTest { Naive, Stable }; // textbook quadratic, or Ray Tracing Gems ch. 7
 enum class TriangleTest { MollerTrumbore, Watertight }; // Moller-Trumbore 1997, or Woop et al. 2013
-enum class RayOffset { Fixed, Scaled };             // 1e-4 along the normal, or Waechter-Binder
+enum class RayOffset { Fixed, Scaled };                 // 1e-4 along the normal, or Waechter-Binder
 
 struct KernelChoices {
     Sampler sampler = Sampler::R2;
@@ -39,7 +39,8 @@ inline const ChoiceNames<Sampler>& samplerNames() {
     return names;
 }
 inline const ChoiceNames<Precision>& precisionNames() {
-    static const ChoiceNames<Precision> names = {{"fp32", Precision::Fp32}, {"fp64", Precision::Fp64}};
+    static const ChoiceNames<Precision> names = {{"fp32", Precision::Fp32},
+                                                 {"fp64", Precision::Fp64}};
     return names;
 }
 inline const ChoiceNames<SphereTest>& sphereTestNames() {

@@ -16,7 +16,8 @@ ShaderSourceLoader embeddedShaderLoader() {
 void writeEmbeddedShaders(const std::filesystem::path& directory) {
     std::error_code error;
     std::filesystem::create_directories(directory, error);
-    if (error) throw std::runtime_error("cannot create " + directory.string() + ": " + error.message());
+    if (error)
+        throw std::runtime_error("cannot create " + directory.string() + ": " + error.message());
     for (const auto& [name, text] : embeddedShaderSources()) {
         const std::filesystem::path path = directory / name;
         std::ofstream file(path, std::ios::binary | std::ios::trunc);

@@ -1,8 +1,8 @@
 #include "render/renderer.h"
 
 #include "gpu/shader_compiler.h"
-#include "shared.h"
 #include "gpu/vk_check.h"
+#include "shared.h"
 
 #include <algorithm>
 #include <chrono>
@@ -47,11 +47,12 @@ void createDescriptors(Renderer& renderer, const Context& context) {
         write.pBufferInfo = &renderer.scene.ranges[binding];
         writes.push_back(write);
     }
-    vkUpdateDescriptorSets(context.device, static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
+    vkUpdateDescriptorSets(context.device, static_cast<std::uint32_t>(writes.size()), writes.data(),
+                           0, nullptr);
 }
 
-gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t dispatchX, std::uint32_t dispatchY,
-                                SampleRange samples) {
+gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t dispatchX,
+                                std::uint32_t dispatchY, SampleRange samples) {
     const RenderSettings& settings = renderer.settings;
     const double tanHalfFov = std::tan(settings.fovDegrees * 0.5 * M_PI / 180.0);
     const double aspect = double(settings.width) / double(settings.height);
@@ -61,8 +62,8 @@ gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t dispatch
     params.camera = glm::vec4(float(aspect * tanHalfFov), float(tanHalfFov), 0.0f, 0.0f);
     const glm::dquat orientation = cameraOrientation(settings.camera);
     params.cameraOrigin = glm::vec4(glm::vec3(settings.camera.position), 0.0f);
-    params.cameraOrientation =
-        glm::vec4(float(orientation.x), float(orientation.y), float(orientation.z), float(orientation.w));
+    params.cameraOrientation = glm::vec4(float(orientation.x), float(orientation.y),
+                                         float(orientation.z), float(orientation.w));
     params.image = glm::uvec4(settings.width, settings.height, settings.samplesPerPixel,
                               std::min<std::uint32_t>(settings.depth, MAX_DEPTH));
     params.counts = glm::uvec4(renderer.scene.sphereCount, renderer.scene.triangleCount,
@@ -83,11 +84,12 @@ PackedScene packWithHierarchy(const Scene& scene, Acceleration acceleration, Pre
     applyLeafOrder(packed, bvh);
     const std::size_t primitives = packed.spheres.size() + packed.triangleVertices.size() / 3;
     if (useHierarchy(acceleration, primitives)) {
-        std::fprintf(stderr, "Acceleration: BVH, %zu two-wide nodes, depth %u, built in %.1f ms\n", bvh.nodes.size(),
-                     bvh.depth, buildMs);
+        std::fprintf(stderr, "Acceleration: BVH, %zu two-wide nodes, depth %u, built in %.1f ms\n",
+                     bvh.nodes.size(), bvh.depth, buildMs);
         packed.bvhNodes = std::move(bvh.nodes);
     } else {
-        std::fprintf(stderr, "Acceleration: none, every primitive tested (%zu primitives)\n", primitives);
+        std::fprintf(stderr, "Acceleration: none, every primitive tested (%zu primitives)\n",
+                     primitives);
     }
     return packed;
 }
@@ -101,8 +103,8 @@ TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderS
     specialization.hasTriangles = !packed.triangleVertices.empty();
     // Spheres and vertices only refer to materials in the list, so a ks > 0 that no
     // primitive uses is impossible; the check is on the float values the kernel reads.
-    const bool anySpecular =
-        std::any_of(packed.materials.begin(), packed.materials.end(), [](const gpu::GpuMaterial& m) {
+    const bool anySpecular = std::any_of(
+        packed.materials.begin(), packed.materials.end(), [](const gpu::GpuMaterial& m) {
             return m.specular.x > 0.0f || m.specular.y > 0.0f || m.specular.z > 0.0f;
         });
     specialization.hasSpecular = anySpecular;
@@ -131,19 +133,22 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
     renderer.scene = uploadScene(context, packed);
     packed = PackedScene{}; // the GPU holds it now
     if (settings.shaderDirectory.empty()) {
-        renderer.pipeline = loadTracePipeline(context, settings.cacheDirectory, specialization, precision);
+        renderer.pipeline =
+            loadTracePipeline(context, settings.cacheDirectory, specialization, precision);
     } else {
         // The user's sources change under us, so neither SPIR-V nor the driver's cache is kept.
         std::vector<std::uint32_t> spirv;
         try {
-            spirv = compileComputeShader("trace.comp", directoryShaderLoader(settings.shaderDirectory),
-                                         precisionPreamble(precision));
+            spirv =
+                compileComputeShader("trace.comp", directoryShaderLoader(settings.shaderDirectory),
+                                     precisionPreamble(precision));
         } catch (const ShaderCompileError& error) {
             // glslang names files as included ("ERROR: shade.glsl:12: ..."); with the folder
             // in front, an editor or terminal can jump to the line.
             const std::regex located("(ERROR|WARNING): ([A-Za-z0-9_.-]+):([0-9]+):");
-            const std::string log = std::regex_replace(
-                error.what(), located, "$1: " + (settings.shaderDirectory / "").string() + "$2:$3:");
+            const std::string log =
+                std::regex_replace(error.what(), located,
+                                   "$1: " + (settings.shaderDirectory / "").string() + "$2:$3:");
             throw ShaderCompileError("the kernel in " + settings.shaderDirectory.string() +
                                      " does not compile (--shader-dir):\n" + log);
         }
@@ -152,7 +157,8 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
     const std::size_t primitives = renderer.scene.sphereCount + renderer.scene.triangleCount;
     if (primitives > 0)
         std::fprintf(stderr, "Scene memory: %llu bytes, %.1f bytes per primitive\n",
-                     static_cast<unsigned long long>(renderer.scene.bytes), double(renderer.scene.bytes) / double(primitives));
+                     static_cast<unsigned long long>(renderer.scene.bytes),
+                     double(renderer.scene.bytes) / double(primitives));
     createDescriptors(renderer, context);
     if (context.timestampsSupported) {
         VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
@@ -163,7 +169,8 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
     resizeOutput(renderer, context, settings.width, settings.height);
 }
 
-void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t width, std::uint32_t height) {
+void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t width,
+                  std::uint32_t height) {
     VK_CHECK(vkDeviceWaitIdle(context.device));
     destroyImage(context, renderer.outputImage);
     renderer.settings.width = width;
@@ -172,7 +179,8 @@ void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t widt
         createImage(context, width, height, VK_FORMAT_R8G8B8A8_UNORM,
                     VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
 
-    VkDescriptorImageInfo imageInfo{VK_NULL_HANDLE, renderer.outputImage.view, VK_IMAGE_LAYOUT_GENERAL};
+    VkDescriptorImageInfo imageInfo{VK_NULL_HANDLE, renderer.outputImage.view,
+                                    VK_IMAGE_LAYOUT_GENERAL};
     VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     write.dstSet = renderer.descriptorSet;
     write.dstBinding = BINDING_OUTPUT_IMAGE;
@@ -184,11 +192,12 @@ void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t widt
     // Its contents never matter: the first dispatch of a progressive run writes before
     // it reads, and one-pass dispatches never touch it.
     destroyBuffer(context, renderer.accumulation);
-    const VkDeviceSize accumulationBytes =
-        renderer.settings.progressive ? VkDeviceSize(width) * height * sizeof(glm::vec4) : sizeof(glm::vec4);
+    const VkDeviceSize accumulationBytes = renderer.settings.progressive
+                                               ? VkDeviceSize(width) * height * sizeof(glm::vec4)
+                                               : sizeof(glm::vec4);
     const std::vector<std::uint8_t> zeros(accumulationBytes, 0);
-    renderer.accumulation =
-        createDeviceBuffer(context, zeros.data(), accumulationBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    renderer.accumulation = createDeviceBuffer(context, zeros.data(), accumulationBytes,
+                                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     VkDescriptorBufferInfo bufferInfo{renderer.accumulation.buffer, 0, VK_WHOLE_SIZE};
     write.dstBinding = BINDING_ACCUMULATION;
     write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
@@ -197,16 +206,18 @@ void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t widt
     vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
 }
 
-void setCamera(Renderer& renderer, const CameraPose& camera) { renderer.settings.camera = camera; }
+void setCamera(Renderer& renderer, const CameraPose& camera) {
+    renderer.settings.camera = camera;
+}
 
 void recordTraceBegin(const Renderer& renderer, VkCommandBuffer commands) {
     // Wait for the previous frame's copy or blit to finish reading before writing.
     // Every pixel is rewritten, so the old contents are discarded (UNDEFINED). The
     // barrier also orders the writes of later submissions of this frame: its scope is
     // everything after it in submission order.
-    transitionImage(commands, renderer.outputImage.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                    VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                    VK_ACCESS_SHADER_WRITE_BIT);
+    transitionImage(commands, renderer.outputImage.image, VK_IMAGE_LAYOUT_UNDEFINED,
+                    VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
 }
 
 namespace {
@@ -218,8 +229,8 @@ void recordRegion(const Renderer& renderer, VkCommandBuffer commands, const Trac
         vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, renderer.timestampPool, 0);
     }
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline.pipeline);
-    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline.layout, 0, 1,
-                            &renderer.descriptorSet, 0, nullptr);
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline.layout, 0,
+                            1, &renderer.descriptorSet, 0, nullptr);
     // Regions write disjoint pixels, so the dispatches need no barrier between them.
     const std::uint32_t right = region.x + region.width, bottom = region.y + region.height;
     for (std::uint32_t dispatchY = region.y; dispatchY < bottom; dispatchY += kMaxDispatchSide) {
@@ -234,12 +245,14 @@ void recordRegion(const Renderer& renderer, VkCommandBuffer commands, const Trac
         }
     }
     if (renderer.timestampPool)
-        vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, renderer.timestampPool, 1);
+        vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, renderer.timestampPool,
+                            1);
 }
 
 } // namespace
 
-void recordTraceRegion(const Renderer& renderer, VkCommandBuffer commands, const TraceRegion& region) {
+void recordTraceRegion(const Renderer& renderer, VkCommandBuffer commands,
+                       const TraceRegion& region) {
     recordRegion(renderer, commands, region, {});
 }
 
@@ -248,7 +261,8 @@ void recordTraceEnd(const Renderer& renderer, VkCommandBuffer commands) {
     // or blit that follows.
     transitionImage(commands, renderer.outputImage.image, VK_IMAGE_LAYOUT_GENERAL,
                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                    VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+                    VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VK_ACCESS_TRANSFER_READ_BIT);
 }
 
 void recordTrace(const Renderer& renderer, VkCommandBuffer commands, SampleRange samples) {
@@ -258,18 +272,20 @@ void recordTrace(const Renderer& renderer, VkCommandBuffer commands, SampleRange
         VkMemoryBarrier sum{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
         sum.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
         sum.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-        vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                             0, 1, &sum, 0, nullptr, 0, nullptr);
+        vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                             VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &sum, 0, nullptr, 0,
+                             nullptr);
     }
-    recordRegion(renderer, commands, {0, 0, renderer.outputImage.width, renderer.outputImage.height}, samples);
+    recordRegion(renderer, commands,
+                 {0, 0, renderer.outputImage.width, renderer.outputImage.height}, samples);
     recordTraceEnd(renderer, commands);
 }
 
 double lastTraceGpuMilliseconds(const Renderer& renderer, const Context& context) {
     if (!renderer.timestampPool) return -1.0;
     std::uint64_t ticks[2] = {};
-    VK_CHECK(vkGetQueryPoolResults(context.device, renderer.timestampPool, 0, 2, sizeof(ticks), ticks,
-                                   sizeof(std::uint64_t),
+    VK_CHECK(vkGetQueryPoolResults(context.device, renderer.timestampPool, 0, 2, sizeof(ticks),
+                                   ticks, sizeof(std::uint64_t),
                                    VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
     return double(ticks[1] - ticks[0]) * context.properties.limits.timestampPeriod * 1e-6;
 }
@@ -279,7 +295,8 @@ void destroyRenderer(Renderer& renderer, const Context& context) {
     destroyImage(context, renderer.outputImage);
     destroyBuffer(context, renderer.accumulation);
     if (renderer.timestampPool) vkDestroyQueryPool(context.device, renderer.timestampPool, nullptr);
-    if (renderer.descriptorPool) vkDestroyDescriptorPool(context.device, renderer.descriptorPool, nullptr);
+    if (renderer.descriptorPool)
+        vkDestroyDescriptorPool(context.device, renderer.descriptorPool, nullptr);
     destroyGpuScene(context, renderer.scene);
     destroyTracePipeline(context, renderer.pipeline);
     renderer = Renderer{};

@@ -2,13 +2,13 @@
 // the window: both trace into the same RGBA8 UNORM image with the same kernel.
 #pragma once
 
-#include "scene/camera.h"
 #include "gpu/context.h"
-#include "render/trace_pipeline.h"
 #include "gpu/resources.h"
-#include "scene/scene.h"
-#include "render/scene_packing.h"
 #include "render/region_planner.h"
+#include "render/scene_packing.h"
+#include "render/trace_pipeline.h"
+#include "scene/camera.h"
+#include "scene/scene.h"
 
 #include <glm/glm.hpp>
 
@@ -23,10 +23,11 @@ struct RenderSettings {
     glm::vec3 background{1.0f};
     double fovDegrees = 60.0;
     Acceleration acceleration = Acceleration::Auto; // --accel: hierarchy or every primitive
-    KernelChoices kernel; // --sampler, --seed, --precision and the method switches
+    KernelChoices kernel;                 // --sampler, --seed, --precision and the method switches
     std::filesystem::path cacheDirectory; // shader and pipeline cache; empty: none (--no-cache)
     CameraPose camera;                    // the default camera unless --camera-* moved it
-    std::filesystem::path shaderDirectory; // --shader-dir: compile from here, uncached; empty: embedded
+    std::filesystem::path
+        shaderDirectory;      // --shader-dir: compile from here, uncached; empty: embedded
     bool progressive = false; // the window: keep a per-pixel running sum (BINDING_ACCUMULATION)
     // --general-kernel (hidden): compile the kernel as if the scene held everything (spheres,
     // triangles, highlights, mirrors), keeping the method choices and the hierarchy, so that
@@ -71,7 +72,8 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
 TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderSettings& settings);
 
 // Recreates the output image at a new size (the window was resized).
-void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t width, std::uint32_t height);
+void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t width,
+                  std::uint32_t height);
 
 // Records the whole frame's trace in one command buffer (the window): all samples, or
 // with samples.count > 0 the next ones of the progressive sum. Afterwards the output
@@ -86,7 +88,8 @@ void setCamera(Renderer& renderer, const CameraPose& camera);
 // first command buffer, recordTraceRegion for each region, recordTraceEnd in the last.
 // The regions must cover the image; each pixel's value does not depend on them.
 void recordTraceBegin(const Renderer& renderer, VkCommandBuffer commands);
-void recordTraceRegion(const Renderer& renderer, VkCommandBuffer commands, const TraceRegion& region);
+void recordTraceRegion(const Renderer& renderer, VkCommandBuffer commands,
+                       const TraceRegion& region);
 void recordTraceEnd(const Renderer& renderer, VkCommandBuffer commands);
 
 // The GPU time of the last finished recordTraceRegion from the timestamp queries, or a

@@ -111,7 +111,7 @@ struct PackedVertex {
     glm::vec4 position;
     glm::vec4 normal;
     std::uint32_t material;
-    std::uint32_t padding; // zero, so equal vertices have equal bytes
+    std::uint32_t padding;    // zero, so equal vertices have equal bytes
     glm::dvec4 exactPosition; // fp64: the position in double; fp32: zero
 };
 

@@ -3,9 +3,9 @@
 // are stored once, and a sphere pays for no triangle fields.
 #pragma once
 
+#include "gpu/resources.h"
 #include "render/bvh.h"
 #include "render/kernel_choices.h"
-#include "gpu/resources.h"
 #include "scene/scene_loader.h"
 #include "shared.h"
 

@@ -1,11 +1,11 @@
 #include "render/trace_pipeline.h"
 
 #include "gpu/cache_file.h"
-#include "render/kernel_sources.h"
 #include "gpu/pipeline_cache.h"
 #include "gpu/shader_compiler.h"
-#include "shared.h"
 #include "gpu/vk_check.h"
+#include "render/kernel_sources.h"
+#include "shared.h"
 
 #include <glslang/build_info.h>
 
@@ -31,11 +31,10 @@ void applyKernelChoices(TraceSpecialization& specialization, const KernelChoices
 // the recipe when shader_compiler.cpp's settings change), the preamble that selects
 // the precision, and every embedded source.
 std::uint64_t traceSourceKey(Precision precision) {
-    const std::string recipe = "trace.comp; glslang " + std::to_string(GLSLANG_VERSION_MAJOR) +
-                               "." + std::to_string(GLSLANG_VERSION_MINOR) + "." +
-                               std::to_string(GLSLANG_VERSION_PATCH) +
-                               "; vulkan1.2 spv1.5 optimized; v1; preamble: " +
-                               precisionPreamble(precision);
+    const std::string recipe =
+        "trace.comp; glslang " + std::to_string(GLSLANG_VERSION_MAJOR) + "." +
+        std::to_string(GLSLANG_VERSION_MINOR) + "." + std::to_string(GLSLANG_VERSION_PATCH) +
+        "; vulkan1.2 spv1.5 optimized; v1; preamble: " + precisionPreamble(precision);
     std::uint64_t key = hashBytes(recipe.data(), recipe.size());
     for (const auto& [name, text] : embeddedShaderSources()) {
         key = hashBytes(name.data(), name.size() + 1,
@@ -120,8 +119,7 @@ TracePipeline createTracePipeline(const Context& context, const std::vector<std:
     return result;
 }
 
-TracePipeline loadTracePipeline(const Context& context,
-                                const std::filesystem::path& cacheDirectory,
+TracePipeline loadTracePipeline(const Context& context, const std::filesystem::path& cacheDirectory,
                                 TraceSpecialization specialization, Precision precision) {
     const std::uint64_t sourceKey = traceSourceKey(precision);
     std::vector<std::uint32_t> spirv;

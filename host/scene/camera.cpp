@@ -14,7 +14,9 @@ constexpr double kDollyFactorPerStep = 0.85;
 // Dolly stops this near the target (world units), so the eye never reaches or passes it.
 constexpr double kMinimumDistance = 1e-4;
 
-bool finite(glm::dvec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(glm::dvec3 v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 // v turned by angle around the unit axis (Rodrigues' formula, exact for angle 0).
 glm::dvec3 rotateAround(glm::dvec3 v, glm::dvec3 axis, double angle) {
@@ -70,14 +72,16 @@ glm::dquat cameraOrientation(const CameraPose& pose) {
 CameraPose orbitCamera(const CameraPose& pose, double yawRadians, double pitchRadians) {
     CameraPose result = pose;
     // Turning the eye's offset from the target towards up raises the eye over the target.
-    result.position = pose.target + turn(pose.position - pose.target, pose.up, yawRadians, pitchRadians);
+    result.position =
+        pose.target + turn(pose.position - pose.target, pose.up, yawRadians, pitchRadians);
     return result;
 }
 
 CameraPose dollyCamera(const CameraPose& pose, double steps) {
     const glm::dvec3 offset = pose.position - pose.target;
     const double distance = glm::length(offset);
-    const double wanted = std::max(distance * std::pow(kDollyFactorPerStep, steps), kMinimumDistance);
+    const double wanted =
+        std::max(distance * std::pow(kDollyFactorPerStep, steps), kMinimumDistance);
     CameraPose result = pose;
     result.position = pose.target + offset * (wanted / distance);
     return result;
@@ -85,7 +89,8 @@ CameraPose dollyCamera(const CameraPose& pose, double steps) {
 
 CameraPose flyCamera(const CameraPose& pose, glm::dvec3 move) {
     const CameraBasis basis = cameraBasis(pose);
-    const glm::dvec3 delta = basis.right * move.x + glm::normalize(pose.up) * move.y + basis.forward * move.z;
+    const glm::dvec3 delta =
+        basis.right * move.x + glm::normalize(pose.up) * move.y + basis.forward * move.z;
     CameraPose result = pose;
     result.position += delta;
     result.target += delta;
@@ -94,12 +99,14 @@ CameraPose flyCamera(const CameraPose& pose, glm::dvec3 move) {
 
 CameraPose lookCamera(const CameraPose& pose, double yawRadians, double pitchRadians) {
     CameraPose result = pose;
-    result.target = pose.position + turn(pose.target - pose.position, pose.up, yawRadians, pitchRadians);
+    result.target =
+        pose.position + turn(pose.target - pose.position, pose.up, yawRadians, pitchRadians);
     return result;
 }
 
 SceneBounds sceneBounds(const Scene& scene) {
-    glm::dvec3 low(std::numeric_limits<double>::infinity()), high(-std::numeric_limits<double>::infinity());
+    glm::dvec3 low(std::numeric_limits<double>::infinity()),
+        high(-std::numeric_limits<double>::infinity());
     for (const Sphere& sphere : scene.spheres) {
         low = glm::min(low, sphere.center - sphere.radius);
         high = glm::max(high, sphere.center + sphere.radius);
@@ -115,7 +122,8 @@ SceneBounds sceneBounds(const Scene& scene) {
 
 CameraPose pivotAtScene(const CameraPose& pose, const SceneBounds& bounds, double minimumDistance) {
     const glm::dvec3 forward = cameraBasis(pose).forward;
-    const double depth = std::max(glm::dot(bounds.centre - pose.position, forward), minimumDistance);
+    const double depth =
+        std::max(glm::dot(bounds.centre - pose.position, forward), minimumDistance);
     CameraPose result = pose;
     result.target = pose.position + forward * depth;
     return result;

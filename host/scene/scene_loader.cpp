@@ -10,8 +10,8 @@
 #include "scene/scene_loader.h"
 
 #include "scene/mapped_file.h"
-#include "scene/scene_parser.h"
 #include "scene/scene_lexer.h"
+#include "scene/scene_parser.h"
 
 #include <cerrno>
 #include <cstdint>
@@ -22,10 +22,10 @@
 #include <system_error>
 #include <thread>
 
+using scene_lexer::Tokenizer;
 using scene_parser::kNowhere;
 using scene_parser::Reader;
 using scene_parser::Warning;
-using scene_lexer::Tokenizer;
 
 namespace {
 

@@ -18,26 +18,30 @@ void writeScreenshot(Viewer& viewer) {
     writePng(path, image);
     const std::string command =
         headlessCommand(options, viewer.camera, image.width, image.height, viewer.sampleTarget);
-    std::fprintf(stderr,
-                 "Screenshot: wrote %s (%dx%d, %u samples per pixel); the same image headless: %s\n",
-                 path.string().c_str(), image.width, image.height, viewer.sampleTarget, command.c_str());
+    std::fprintf(
+        stderr, "Screenshot: wrote %s (%dx%d, %u samples per pixel); the same image headless: %s\n",
+        path.string().c_str(), image.width, image.height, viewer.sampleTarget, command.c_str());
 }
 
 void countBenchFrame(Viewer& viewer, std::uint32_t samples) {
     if (viewer.benchFrames == 0) return;
-    if (viewer.benchCounted++ == 0) viewer.benchStart = Clock::now(); // the first frame warms up
-    else viewer.benchSamples += samples;
+    if (viewer.benchCounted++ == 0)
+        viewer.benchStart = Clock::now(); // the first frame warms up
+    else
+        viewer.benchSamples += samples;
 }
 
 void finishBenchIfDone(Viewer& viewer) {
     if (viewer.benchFrames == 0 || viewer.benchCounted <= viewer.benchFrames) return;
     const double seconds = std::chrono::duration<double>(Clock::now() - viewer.benchStart).count();
     const Image& output = viewer.renderer.outputImage;
-    std::printf("{\"scene\": \"%s\", \"device\": \"%s\", \"width\": %u, \"height\": %u, \"frames\": %u, "
-                "\"seconds\": %.3f, \"fps\": %.2f, \"samples_per_frame\": 1, \"megasamples_per_second\": %.3f}\n",
-                viewer.sceneName.c_str(), viewer.context.properties.deviceName, output.width, output.height,
-                viewer.benchFrames, seconds, viewer.benchFrames / seconds,
-                double(viewer.benchSamples) * output.width * output.height / seconds * 1e-6);
+    std::printf(
+        "{\"scene\": \"%s\", \"device\": \"%s\", \"width\": %u, \"height\": %u, \"frames\": %u, "
+        "\"seconds\": %.3f, \"fps\": %.2f, \"samples_per_frame\": 1, \"megasamples_per_second\": "
+        "%.3f}\n",
+        viewer.sceneName.c_str(), viewer.context.properties.deviceName, output.width, output.height,
+        viewer.benchFrames, seconds, viewer.benchFrames / seconds,
+        double(viewer.benchSamples) * output.width * output.height / seconds * 1e-6);
     std::fflush(stdout);
     glfwSetWindowShouldClose(viewer.window, GLFW_TRUE);
 }

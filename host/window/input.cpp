@@ -14,7 +14,9 @@ namespace {
 // Mouse sensitivity (radians per pixel) for orbit and look.
 constexpr double kOrbitPerPixel = 0.01, kLookPerPixel = 0.003;
 
-Viewer& viewerOf(GLFWwindow* window) { return *static_cast<Viewer*>(glfwGetWindowUserPointer(window)); }
+Viewer& viewerOf(GLFWwindow* window) {
+    return *static_cast<Viewer*>(glfwGetWindowUserPointer(window));
+}
 
 // Orbit and dolly turn around a target at the scene's depth rather than the default one
 // unit ahead. Placed on the first such move only, so that the pose of --camera-pos (and
@@ -22,7 +24,8 @@ Viewer& viewerOf(GLFWwindow* window) { return *static_cast<Viewer*>(glfwGetWindo
 void placePivot(Viewer& viewer) {
     if (viewer.pivotPlaced) return;
     viewer.pivotPlaced = true;
-    viewer.camera = pivotAtScene(viewer.camera, viewer.bounds, std::max(viewer.bounds.radius, 1.0) * 1e-3);
+    viewer.camera =
+        pivotAtScene(viewer.camera, viewer.bounds, std::max(viewer.bounds.radius, 1.0) * 1e-3);
 }
 
 void toggleVsync(Viewer& viewer) {
@@ -35,23 +38,29 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     Viewer& viewer = viewerOf(window);
     switch (key) {
     case GLFW_KEY_ESCAPE:
-    case GLFW_KEY_Q: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
+    case GLFW_KEY_Q:
+        glfwSetWindowShouldClose(window, GLFW_TRUE);
+        break;
     case GLFW_KEY_R:
         reloadScene(viewer); // also recompiles the shaders: the renderer is built anew
         break;
     case GLFW_KEY_P:
         viewer.screenshotPending = true;
         if (refining(viewer))
-            std::fprintf(stderr, "Screenshot: written once all %u samples per pixel are in (%u so far)\n",
+            std::fprintf(stderr,
+                         "Screenshot: written once all %u samples per pixel are in (%u so far)\n",
                          viewer.sampleTarget, viewer.samplesDone);
         break;
-    case GLFW_KEY_V: toggleVsync(viewer); break;
+    case GLFW_KEY_V:
+        toggleVsync(viewer);
+        break;
     case GLFW_KEY_C:
     case GLFW_KEY_HOME:
         viewer.pivotPlaced = false;
         setCamera(viewer, CameraPose{});
         break;
-    default: break;
+    default:
+        break;
     }
 }
 
@@ -81,10 +90,14 @@ void onScroll(GLFWwindow* window, double, double steps) {
     setCamera(viewer, dollyCamera(viewer.camera, steps));
 }
 
-void onFramebufferSize(GLFWwindow* window, int, int) { viewerOf(window).resized = true; }
+void onFramebufferSize(GLFWwindow* window, int, int) {
+    viewerOf(window).resized = true;
+}
 
 // The window system lost the window's contents (it was exposed): show the image again.
-void onRefresh(GLFWwindow* window) { viewerOf(window).presentNeeded = true; }
+void onRefresh(GLFWwindow* window) {
+    viewerOf(window).presentNeeded = true;
+}
 
 } // namespace
 
@@ -100,10 +113,12 @@ void installInputCallbacks(Viewer& viewer) {
 
 bool applyFlyKeys(Viewer& viewer) {
     const Clock::time_point now = Clock::now();
-    const double seconds = std::min(std::chrono::duration<double>(now - viewer.lastMove).count(), 0.1);
+    const double seconds =
+        std::min(std::chrono::duration<double>(now - viewer.lastMove).count(), 0.1);
     viewer.lastMove = now;
     auto held = [&](int key) { return glfwGetKey(viewer.window, key) == GLFW_PRESS ? 1.0 : 0.0; };
-    const glm::dvec3 direction(held(GLFW_KEY_D) - held(GLFW_KEY_A), held(GLFW_KEY_SPACE) - held(GLFW_KEY_LEFT_SHIFT),
+    const glm::dvec3 direction(held(GLFW_KEY_D) - held(GLFW_KEY_A),
+                               held(GLFW_KEY_SPACE) - held(GLFW_KEY_LEFT_SHIFT),
                                held(GLFW_KEY_W) - held(GLFW_KEY_S));
     if (direction == glm::dvec3(0.0)) return false;
     const double speed = std::max(viewer.bounds.radius, 1.0) * 0.5;

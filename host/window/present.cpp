@@ -30,9 +30,9 @@ void record(const Viewer& viewer, VkCommandBuffer commands, VkImage target, Samp
     // The swapchain image's old contents are discarded (UNDEFINED). The submit waits on
     // image-available at the TRANSFER stage, so this barrier, which starts at that stage,
     // orders the layout change and the blit's writes after the presentation engine let go.
-    transitionImage(commands, target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                    VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                    VK_ACCESS_TRANSFER_WRITE_BIT);
+    transitionImage(commands, target, VK_IMAGE_LAYOUT_UNDEFINED,
+                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                    VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
     // Same size, nearest filter: every pixel is copied unchanged. RGBA8 to BGRA8 UNORM
     // swaps channels only; the 8-bit values stay exact.
     const Image& output = viewer.renderer.outputImage;
@@ -45,26 +45,29 @@ void record(const Viewer& viewer, VkCommandBuffer commands, VkImage target, Samp
                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_NEAREST);
     // Hand the image to presentation once the blit has written it. The present waits on
     // the render-finished semaphore, which makes the writes visible, so no access follows.
-    transitionImage(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
-                    VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                    VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
+    transitionImage(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                    VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
     VK_CHECK(vkEndCommandBuffer(commands));
 }
 
 // "NAME - WxH - k/N spp - T ms - DEVICE": the tests wait for "k/N spp" with k == N.
 void showTitle(const Viewer& viewer) {
     char title[512];
-    std::snprintf(title, sizeof(title), "%s - %ux%u - %u/%u spp - %.1f ms - %s", viewer.sceneName.c_str(),
-                  viewer.renderer.outputImage.width, viewer.renderer.outputImage.height, viewer.samplesDone,
-                  viewer.sampleTarget, viewer.lastFrameMs, viewer.context.properties.deviceName);
+    std::snprintf(title, sizeof(title), "%s - %ux%u - %u/%u spp - %.1f ms - %s",
+                  viewer.sceneName.c_str(), viewer.renderer.outputImage.width,
+                  viewer.renderer.outputImage.height, viewer.samplesDone, viewer.sampleTarget,
+                  viewer.lastFrameMs, viewer.context.properties.deviceName);
     glfwSetWindowTitle(viewer.window, title);
 }
 
 // More samples per frame while frames are quick, fewer when slow. The bench keeps one.
 void adaptSamplesPerFrame(Viewer& viewer, double milliseconds) {
     if (viewer.benchFrames > 0) return;
-    if (milliseconds < kFastFrameMs) viewer.samplesPerFrame = std::min(viewer.samplesPerFrame * 2, kMaxSamplesPerFrame);
-    else if (milliseconds > kSlowFrameMs) viewer.samplesPerFrame = std::max(viewer.samplesPerFrame / 2, 1u);
+    if (milliseconds < kFastFrameMs)
+        viewer.samplesPerFrame = std::min(viewer.samplesPerFrame * 2, kMaxSamplesPerFrame);
+    else if (milliseconds > kSlowFrameMs)
+        viewer.samplesPerFrame = std::max(viewer.samplesPerFrame / 2, 1u);
 }
 
 } // namespace
@@ -91,7 +94,8 @@ void destroyFrames(Viewer& viewer) {
     for (Frame& frame : viewer.frames) {
         if (frame.done) vkDestroyFence(device, frame.done, nullptr);
         if (frame.imageAvailable) vkDestroySemaphore(device, frame.imageAvailable, nullptr);
-        if (frame.commands) vkFreeCommandBuffers(device, viewer.context.commandPool, 1, &frame.commands);
+        if (frame.commands)
+            vkFreeCommandBuffers(device, viewer.context.commandPool, 1, &frame.commands);
         frame = Frame{};
     }
 }
@@ -103,8 +107,10 @@ bool refreshSwapchain(Viewer& viewer) {
     VkExtent2D size{std::uint32_t(width), std::uint32_t(height)};
     const VkPresentModeKHR oldMode = viewer.swapchain.presentMode;
     const bool existed = viewer.swapchain.swapchain != VK_NULL_HANDLE;
-    bool created = existed ? recreateSwapchain(viewer.swapchain, viewer.context, viewer.surface, size, viewer.vsync)
-                           : createSwapchain(viewer.swapchain, viewer.context, viewer.surface, size, viewer.vsync);
+    bool created = existed ? recreateSwapchain(viewer.swapchain, viewer.context, viewer.surface,
+                                               size, viewer.vsync)
+                           : createSwapchain(viewer.swapchain, viewer.context, viewer.surface, size,
+                                             viewer.vsync);
     if (!created) return false;
     if (existed && viewer.swapchain.presentMode != oldMode)
         std::fprintf(stderr, "Vsync %s (present mode %s)\n", viewer.vsync ? "on" : "off",
@@ -113,7 +119,8 @@ bool refreshSwapchain(Viewer& viewer) {
     viewer.presentNeeded = true;
     // The blit copies 1:1, so the output image always has the swapchain's size.
     const VkExtent2D extent = viewer.swapchain.extent;
-    if (extent.width != viewer.renderer.outputImage.width || extent.height != viewer.renderer.outputImage.height) {
+    if (extent.width != viewer.renderer.outputImage.width ||
+        extent.height != viewer.renderer.outputImage.height) {
         resizeOutput(viewer.renderer, viewer.context, extent.width, extent.height);
         restartRefinement(viewer);
     }
@@ -131,15 +138,18 @@ void drawFrame(Viewer& viewer) {
         viewer.swapchainStale = true; // nothing was acquired, the semaphore stays unsignalled
         return;
     }
-    if (acquired != VK_SUBOPTIMAL_KHR) VK_CHECK(acquired); // suboptimal still acquired an image: use it
+    if (acquired != VK_SUBOPTIMAL_KHR)
+        VK_CHECK(acquired); // suboptimal still acquired an image: use it
     VK_CHECK(vkResetFences(device, 1, &frame.done));
     SampleRange samples;
     if (refining(viewer))
-        samples = {viewer.samplesDone, std::min(viewer.samplesPerFrame, viewer.sampleTarget - viewer.samplesDone)};
+        samples = {viewer.samplesDone,
+                   std::min(viewer.samplesPerFrame, viewer.sampleTarget - viewer.samplesDone)};
     record(viewer, frame.commands, viewer.swapchain.images[imageIndex], samples);
 
     VkSemaphore renderFinished = viewer.swapchain.renderFinished[imageIndex];
-    VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_TRANSFER_BIT; // the first use of the image is the blit
+    VkPipelineStageFlags waitStage =
+        VK_PIPELINE_STAGE_TRANSFER_BIT; // the first use of the image is the blit
     VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
     submit.waitSemaphoreCount = 1;
     submit.pWaitSemaphores = &frame.imageAvailable;
@@ -158,7 +168,8 @@ void drawFrame(Viewer& viewer) {
     present.pSwapchains = &viewer.swapchain.swapchain;
     present.pImageIndices = &imageIndex;
     VkResult presented = vkQueuePresentKHR(viewer.context.queue, &present);
-    if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR || acquired == VK_SUBOPTIMAL_KHR)
+    if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR ||
+        acquired == VK_SUBOPTIMAL_KHR)
         viewer.swapchainStale = true; // presentNeeded stays set: show it again on the new swapchain
     else {
         VK_CHECK(presented);
@@ -170,13 +181,15 @@ void drawFrame(Viewer& viewer) {
     // sizes the next one, and input is then never more than one frame behind.
     if (samples.count > 0) {
         VK_CHECK(vkWaitForFences(device, 1, &frame.done, VK_TRUE, UINT64_MAX));
-        viewer.lastFrameMs = std::chrono::duration<double, std::milli>(Clock::now() - submitted).count();
+        viewer.lastFrameMs =
+            std::chrono::duration<double, std::milli>(Clock::now() - submitted).count();
         viewer.samplesDone += samples.count;
         adaptSamplesPerFrame(viewer, viewer.lastFrameMs);
         // One line per finished image (the tests wait for it), none while soaking.
         if (!refining(viewer) && !viewer.continuous && viewer.benchFrames == 0)
-            std::fprintf(stderr, "Refined: %u samples per pixel at %ux%u in %.2f s\n", viewer.sampleTarget,
-                         viewer.renderer.outputImage.width, viewer.renderer.outputImage.height,
+            std::fprintf(stderr, "Refined: %u samples per pixel at %ux%u in %.2f s\n",
+                         viewer.sampleTarget, viewer.renderer.outputImage.width,
+                         viewer.renderer.outputImage.height,
                          std::chrono::duration<double>(Clock::now() - viewer.refineStart).count());
         showTitle(viewer);
         viewer.presentNeeded = viewer.presentNeeded || refining(viewer);

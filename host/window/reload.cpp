@@ -32,7 +32,8 @@ bool rebuildRenderer(Viewer& viewer, const Scene& scene) {
 
 void reloadShaders(Viewer& viewer) {
     if (rebuildRenderer(viewer, viewer.scene))
-        std::fprintf(stderr, "Reloaded the shaders%s%s\n", viewer.options->shaderDirectory.empty() ? "" : " from ",
+        std::fprintf(stderr, "Reloaded the shaders%s%s\n",
+                     viewer.options->shaderDirectory.empty() ? "" : " from ",
                      viewer.options->shaderDirectory.string().c_str());
 }
 
@@ -46,7 +47,8 @@ void reloadScene(Viewer& viewer) {
         std::fprintf(stderr, "%s\nKeeping the last good scene.\n", error.what());
         return;
     }
-    for (const std::string& warning : scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
+    for (const std::string& warning : scene.warnings)
+        std::fprintf(stderr, "%s\n", warning.c_str());
     if (rebuildRenderer(viewer, scene)) {
         viewer.scene = std::move(scene);
         std::fprintf(stderr, "Reloaded %s\n", viewer.options->scenePath.string().c_str());
@@ -57,6 +59,8 @@ void pollWatchedFiles(Viewer& viewer) {
     const Clock::time_point now = Clock::now();
     if (std::chrono::duration<double>(now - viewer.lastWatch).count() < kWatchInterval) return;
     viewer.lastWatch = now;
-    if (pathChanged(viewer.sceneWatch)) reloadScene(viewer);
-    else if (!viewer.shaderWatch.path.empty() && pathChanged(viewer.shaderWatch)) reloadShaders(viewer);
+    if (pathChanged(viewer.sceneWatch))
+        reloadScene(viewer);
+    else if (!viewer.shaderWatch.path.empty() && pathChanged(viewer.shaderWatch))
+        reloadShaders(viewer);
 }

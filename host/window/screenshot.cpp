@@ -16,13 +16,13 @@ Image8 readOutputImage(const Context& context, const Renderer& renderer) {
             VkBufferImageCopy region{};
             region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
             region.imageExtent = {output.width, output.height, 1};
-            vkCmdCopyImageToBuffer(commands, output.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer,
-                                   1, &region);
+            vkCmdCopyImageToBuffer(commands, output.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                   readback.buffer, 1, &region);
             VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
             toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
             toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-            vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
-                                 &toHost, 0, nullptr, 0, nullptr);
+            vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                                 VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
         });
         image.width = int(output.width);
         image.height = int(output.height);
@@ -36,9 +36,11 @@ Image8 readOutputImage(const Context& context, const Renderer& renderer) {
     return image;
 }
 
-std::filesystem::path nextScreenshotPath(const std::filesystem::path& folder, const std::string& stem) {
+std::filesystem::path nextScreenshotPath(const std::filesystem::path& folder,
+                                         const std::string& stem) {
     for (unsigned n = 1;; ++n) {
-        std::filesystem::path candidate = folder / (stem + "-screenshot-" + std::to_string(n) + ".png");
+        std::filesystem::path candidate =
+            folder / (stem + "-screenshot-" + std::to_string(n) + ".png");
         std::error_code error;
         if (!std::filesystem::exists(candidate, error)) return candidate;
     }

@@ -14,7 +14,8 @@
 Image8 readOutputImage(const Context& context, const Renderer& renderer);
 
 // STEM-screenshot-N.png in folder for the smallest N >= 1 not taken yet.
-std::filesystem::path nextScreenshotPath(const std::filesystem::path& folder, const std::string& stem);
+std::filesystem::path nextScreenshotPath(const std::filesystem::path& folder,
+                                         const std::string& stem);
 
 // The headless command line that renders the window's image (width x height, spp samples,
 // seen from camera): everything that changes pixels, --depth and --fov always, the

@@ -13,26 +13,30 @@ namespace {
 // apply the sRGB curve a second time on write, so it is never taken.
 VkSurfaceFormatKHR chooseFormat(const Context& context, VkSurfaceKHR surface) {
     std::uint32_t count = 0;
-    VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(context.physicalDevice, surface, &count, nullptr));
+    VK_CHECK(
+        vkGetPhysicalDeviceSurfaceFormatsKHR(context.physicalDevice, surface, &count, nullptr));
     std::vector<VkSurfaceFormatKHR> formats(count);
-    VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(context.physicalDevice, surface, &count, formats.data()));
+    VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(context.physicalDevice, surface, &count,
+                                                  formats.data()));
     for (VkFormat wanted : {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM}) {
         for (const VkSurfaceFormatKHR& format : formats) {
-            if (format.format != wanted || format.colorSpace != VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) continue;
+            if (format.format != wanted || format.colorSpace != VK_COLOR_SPACE_SRGB_NONLINEAR_KHR)
+                continue;
             VkFormatProperties properties{};
             vkGetPhysicalDeviceFormatProperties(context.physicalDevice, wanted, &properties);
             if (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT) return format;
         }
     }
-    throw std::runtime_error(std::string("the window surface on ") + context.properties.deviceName +
-                             " offers neither B8G8R8A8_UNORM nor R8G8B8A8_UNORM (sRGB colour space) "
-                             "as a blit destination; render headless with -o instead");
+    throw std::runtime_error(
+        std::string("the window surface on ") + context.properties.deviceName +
+        " offers neither B8G8R8A8_UNORM nor R8G8B8A8_UNORM (sRGB colour space) "
+        "as a blit destination; render headless with -o instead");
 }
 
 VkCompositeAlphaFlagBitsKHR chooseCompositeAlpha(VkCompositeAlphaFlagsKHR supported) {
-    for (VkCompositeAlphaFlagBitsKHR mode : {VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR, VK_COMPOSITE_ALPHA_INHERIT_BIT_KHR,
-                                             VK_COMPOSITE_ALPHA_PRE_MULTIPLIED_BIT_KHR,
-                                             VK_COMPOSITE_ALPHA_POST_MULTIPLIED_BIT_KHR})
+    for (VkCompositeAlphaFlagBitsKHR mode :
+         {VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR, VK_COMPOSITE_ALPHA_INHERIT_BIT_KHR,
+          VK_COMPOSITE_ALPHA_PRE_MULTIPLIED_BIT_KHR, VK_COMPOSITE_ALPHA_POST_MULTIPLIED_BIT_KHR})
         if (supported & mode) return mode;
     return VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
 }
@@ -40,9 +44,11 @@ VkCompositeAlphaFlagBitsKHR chooseCompositeAlpha(VkCompositeAlphaFlagsKHR suppor
 VkPresentModeKHR choosePresentMode(const Context& context, VkSurfaceKHR surface, bool vsync) {
     if (vsync) return VK_PRESENT_MODE_FIFO_KHR;
     std::uint32_t count = 0;
-    VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(context.physicalDevice, surface, &count, nullptr));
+    VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(context.physicalDevice, surface, &count,
+                                                       nullptr));
     std::vector<VkPresentModeKHR> modes(count);
-    VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(context.physicalDevice, surface, &count, modes.data()));
+    VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(context.physicalDevice, surface, &count,
+                                                       modes.data()));
     for (VkPresentModeKHR wanted : {VK_PRESENT_MODE_MAILBOX_KHR, VK_PRESENT_MODE_IMMEDIATE_KHR})
         if (std::find(modes.begin(), modes.end(), wanted) != modes.end()) return wanted;
     return VK_PRESENT_MODE_FIFO_KHR;
@@ -50,23 +56,27 @@ VkPresentModeKHR choosePresentMode(const Context& context, VkSurfaceKHR surface,
 
 // Creates the swapchain; oldSwapchain (may be null) is handed to the driver so it can
 // reuse its resources. Returns false for a 0x0 surface.
-bool create(Swapchain& swapchain, const Context& context, VkSurfaceKHR surface, VkExtent2D framebufferSize,
-            VkSwapchainKHR oldSwapchain, bool vsync) {
+bool create(Swapchain& swapchain, const Context& context, VkSurfaceKHR surface,
+            VkExtent2D framebufferSize, VkSwapchainKHR oldSwapchain, bool vsync) {
     VkSurfaceCapabilitiesKHR capabilities{};
-    VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(context.physicalDevice, surface, &capabilities));
+    VK_CHECK(
+        vkGetPhysicalDeviceSurfaceCapabilitiesKHR(context.physicalDevice, surface, &capabilities));
     if (!(capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT))
-        throw std::runtime_error("the window surface does not accept transfer writes (blits) to its images");
+        throw std::runtime_error(
+            "the window surface does not accept transfer writes (blits) to its images");
 
     // 0xFFFFFFFF means the surface takes its size from the swapchain: use the framebuffer's.
     VkExtent2D extent = capabilities.currentExtent;
     if (extent.width == UINT32_MAX) extent = framebufferSize;
-    extent.width = std::clamp(extent.width, capabilities.minImageExtent.width, capabilities.maxImageExtent.width);
-    extent.height =
-        std::clamp(extent.height, capabilities.minImageExtent.height, capabilities.maxImageExtent.height);
+    extent.width = std::clamp(extent.width, capabilities.minImageExtent.width,
+                              capabilities.maxImageExtent.width);
+    extent.height = std::clamp(extent.height, capabilities.minImageExtent.height,
+                               capabilities.maxImageExtent.height);
     if (extent.width == 0 || extent.height == 0) return false;
 
     std::uint32_t imageCount = capabilities.minImageCount + 1;
-    if (capabilities.maxImageCount > 0) imageCount = std::min(imageCount, capabilities.maxImageCount);
+    if (capabilities.maxImageCount > 0)
+        imageCount = std::min(imageCount, capabilities.maxImageCount);
     VkSurfaceFormatKHR format = chooseFormat(context, surface);
 
     VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
@@ -91,7 +101,8 @@ bool create(Swapchain& swapchain, const Context& context, VkSurfaceKHR surface, 
     std::uint32_t count = 0;
     VK_CHECK(vkGetSwapchainImagesKHR(context.device, swapchain.swapchain, &count, nullptr));
     swapchain.images.resize(count);
-    VK_CHECK(vkGetSwapchainImagesKHR(context.device, swapchain.swapchain, &count, swapchain.images.data()));
+    VK_CHECK(vkGetSwapchainImagesKHR(context.device, swapchain.swapchain, &count,
+                                     swapchain.images.data()));
     swapchain.renderFinished.resize(count, VK_NULL_HANDLE);
     VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
     for (VkSemaphore& semaphore : swapchain.renderFinished)
@@ -142,10 +153,15 @@ void destroySwapchain(Swapchain& swapchain, const Context& context) {
 
 const char* presentModeName(VkPresentModeKHR mode) {
     switch (mode) {
-    case VK_PRESENT_MODE_FIFO_KHR: return "FIFO";
-    case VK_PRESENT_MODE_MAILBOX_KHR: return "MAILBOX";
-    case VK_PRESENT_MODE_IMMEDIATE_KHR: return "IMMEDIATE";
-    case VK_PRESENT_MODE_FIFO_RELAXED_KHR: return "FIFO_RELAXED";
-    default: return "other";
+    case VK_PRESENT_MODE_FIFO_KHR:
+        return "FIFO";
+    case VK_PRESENT_MODE_MAILBOX_KHR:
+        return "MAILBOX";
+    case VK_PRESENT_MODE_IMMEDIATE_KHR:
+        return "IMMEDIATE";
+    case VK_PRESENT_MODE_FIFO_RELAXED_KHR:
+        return "FIFO_RELAXED";
+    default:
+        return "other";
     }
 }

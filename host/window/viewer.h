@@ -4,11 +4,11 @@
 // Internal to the window: nothing outside those files includes it.
 #pragma once
 
-#include "scene/camera.h"
-#include "gpu/context.h"
 #include "base/file_watch.h"
 #include "cli/options.h"
+#include "gpu/context.h"
 #include "render/renderer.h"
+#include "scene/camera.h"
 #include "scene/scene.h"
 #include "window/swapchain.h"
 
@@ -59,12 +59,12 @@ struct Viewer {
     FileWatch sceneWatch, shaderWatch;
     Clock::time_point lastWatch = Clock::now();
 
-    bool resized = false;        // the framebuffer changed size: new swapchain, maybe a new trace
-    bool swapchainStale = true;  // no usable swapchain yet, or OUT_OF_DATE/SUBOPTIMAL was reported
-    bool presentNeeded = true;   // the window does not show the output image
+    bool resized = false;       // the framebuffer changed size: new swapchain, maybe a new trace
+    bool swapchainStale = true; // no usable swapchain yet, or OUT_OF_DATE/SUBOPTIMAL was reported
+    bool presentNeeded = true;  // the window does not show the output image
     bool vsync = true;
     bool screenshotPending = false; // P: write it once refinement is done
-    bool continuous = false;        // --redraw-continuously: restart the sum every frame (soak test)
+    bool continuous = false; // --redraw-continuously: restart the sum every frame (soak test)
 
     // --bench-window N: frames timed after the first.
     std::uint32_t benchFrames = 0, benchCounted = 0;
@@ -72,7 +72,9 @@ struct Viewer {
     Clock::time_point benchStart;
 };
 
-inline bool refining(const Viewer& viewer) { return viewer.samplesDone < viewer.sampleTarget; }
+inline bool refining(const Viewer& viewer) {
+    return viewer.samplesDone < viewer.sampleTarget;
+}
 
 // Something the image depends on changed: the sum starts again.
 inline void restartRefinement(Viewer& viewer) {

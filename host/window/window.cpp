@@ -11,12 +11,12 @@
 #include "window/window.h"
 
 #include "cli/render_settings.h"
-#include "window/viewer.h"
 #include "gpu/vk_check.h"
 #include "window/capture.h"
 #include "window/input.h"
 #include "window/present.h"
 #include "window/reload.h"
+#include "window/viewer.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -41,8 +41,10 @@ bool glfwReady = false;
 std::string glfwInitError; // the last error before glfwInit succeeded
 
 void onGlfwError(int code, const char* description) {
-    if (glfwReady) std::fprintf(stderr, "GLFW error 0x%x: %s\n", code, description);
-    else glfwInitError = description;
+    if (glfwReady)
+        std::fprintf(stderr, "GLFW error 0x%x: %s\n", code, description);
+    else
+        glfwInitError = description;
 }
 
 void open(Viewer& viewer, const Options& options, const Scene& scene) {
@@ -66,16 +68,20 @@ void open(Viewer& viewer, const Options& options, const Scene& scene) {
     glfwWindowHintString(GLFW_X11_CLASS_NAME, "Raytracer");
     glfwWindowHintString(GLFW_X11_INSTANCE_NAME, "raytracer");
     std::string title = viewer.sceneName + " - rendering...";
-    viewer.window = glfwCreateWindow(int(options.width), int(options.height), title.c_str(), nullptr, nullptr);
-    if (!viewer.window) throw std::runtime_error("could not create a window (see the GLFW error above)");
+    viewer.window =
+        glfwCreateWindow(int(options.width), int(options.height), title.c_str(), nullptr, nullptr);
+    if (!viewer.window)
+        throw std::runtime_error("could not create a window (see the GLFW error above)");
     installInputCallbacks(viewer);
 
-    if (!glfwVulkanSupported()) throw std::runtime_error("GLFW found no Vulkan loader for the window");
+    if (!glfwVulkanSupported())
+        throw std::runtime_error("GLFW found no Vulkan loader for the window");
     std::uint32_t extensionCount = 0;
     const char** extensions = glfwGetRequiredInstanceExtensions(&extensionCount);
     if (!extensions) throw std::runtime_error("Vulkan cannot present to this window system");
     createInstance(viewer.context, {extensions, extensions + extensionCount}, options.validate);
-    VK_CHECK(glfwCreateWindowSurface(viewer.context.instance, viewer.window, nullptr, &viewer.surface));
+    VK_CHECK(
+        glfwCreateWindowSurface(viewer.context.instance, viewer.window, nullptr, &viewer.surface));
     createDevice(viewer.context, options.device, viewer.surface,
                  options.kernel.precision == Precision::Fp64);
 
@@ -98,10 +104,12 @@ void runLoop(Viewer& viewer) {
         }
         // Sleep until something happens, or the next look at the files, unless a frame
         // is still owed or the user is flying.
-        const bool busy = viewer.presentNeeded || viewer.swapchainStale || viewer.resized || refining(viewer) ||
-                          viewer.leftDrag || viewer.rightDrag;
-        if (busy) glfwPollEvents();
-        else glfwWaitEventsTimeout(kWatchInterval);
+        const bool busy = viewer.presentNeeded || viewer.swapchainStale || viewer.resized ||
+                          refining(viewer) || viewer.leftDrag || viewer.rightDrag;
+        if (busy)
+            glfwPollEvents();
+        else
+            glfwWaitEventsTimeout(kWatchInterval);
         if (glfwWindowShouldClose(viewer.window)) break;
         pollWatchedFiles(viewer);
         if (applyFlyKeys(viewer)) viewer.presentNeeded = true;
@@ -110,11 +118,13 @@ void runLoop(Viewer& viewer) {
             viewer.swapchainStale = true;
         }
         if (viewer.swapchainStale && !refreshSwapchain(viewer)) {
-            glfwWaitEventsTimeout(kWatchInterval); // minimised: draw nothing until the window changes
+            glfwWaitEventsTimeout(
+                kWatchInterval); // minimised: draw nothing until the window changes
             continue;
         }
         if (viewer.presentNeeded || refining(viewer)) drawFrame(viewer);
-        if (viewer.screenshotPending && !refining(viewer) && !viewer.continuous) writeScreenshot(viewer);
+        if (viewer.screenshotPending && !refining(viewer) && !viewer.continuous)
+            writeScreenshot(viewer);
         finishBenchIfDone(viewer);
     }
 }
@@ -143,7 +153,9 @@ void shutDown(Viewer& viewer) {
 
 } // namespace
 
-std::string windowUnavailableReason() { return glfwInitError.empty() ? "GLFW could not start" : glfwInitError; }
+std::string windowUnavailableReason() {
+    return glfwInitError.empty() ? "GLFW could not start" : glfwInitError;
+}
 
 bool runWindow(const Options& options, const Scene& scene) {
     glfwSetErrorCallback(onGlfwError);

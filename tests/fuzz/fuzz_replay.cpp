@@ -18,7 +18,8 @@ namespace {
 
 void replay(const std::filesystem::path& path) {
     std::ifstream file(path, std::ios::binary);
-    std::vector<char> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    std::vector<char> bytes((std::istreambuf_iterator<char>(file)),
+                            std::istreambuf_iterator<char>());
     std::printf("%s (%zu bytes)\n", path.c_str(), bytes.size());
     std::fflush(stdout); // the name is printed before a crash
     LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
@@ -38,7 +39,8 @@ int main(int argc, char** argv) {
             for (const auto& entry : std::filesystem::recursive_directory_iterator(argument))
                 if (entry.is_regular_file()) files.push_back(entry.path());
             std::sort(files.begin(), files.end());
-            for (const auto& file : files) replay(file);
+            for (const auto& file : files)
+                replay(file);
             count += files.size();
         } else {
             std::fprintf(stderr, "fuzz_replay: %s is neither a file nor a folder\n", argv[i]);

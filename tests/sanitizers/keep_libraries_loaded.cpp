@@ -5,4 +5,6 @@
 // "<unknown module>" frames, impossible to attribute or to suppress by library. This
 // dlclose, which the executable exports and so the loader calls instead of glibc's,
 // keeps every library loaded, so reports name the library and function.
-extern "C" int dlclose(void*) { return 0; }
+extern "C" int dlclose(void*) {
+    return 0;
+}

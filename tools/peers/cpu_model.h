@@ -1,5 +1,5 @@
-// the model of docs/model.md on the CPU in float, shared by every peer: surface data at a hit, Phong
-// with hard shadows, the reflection loop. It mirrors the GPU kernel (shaders/shade.glsl,
+// the model of docs/model.md on the CPU in float, shared by every peer: surface data at a hit,
+// Phong with hard shadows, the reflection loop. It mirrors the GPU kernel (shaders/shade.glsl,
 // trace.comp) step for step; only the intersector differs between peers, so a benchmark
 // compares intersectors and nothing else.
 //
@@ -30,7 +30,7 @@ enum class HitKind : std::uint8_t { none, sphere, triangle };
 struct PeerHit {
     float t = 0.0f;
     HitKind kind = HitKind::none;
-    std::uint32_t index = 0; // into scene.spheres or scene.triangles
+    std::uint32_t index = 0;  // into scene.spheres or scene.triangles
     float u = 0.0f, v = 0.0f; // triangles: the weights of corners 1 and 2 (Embree's u, v)
 };
 
@@ -87,8 +87,8 @@ inline PeerSurface surfaceAt(const PeerScene& scene, const PeerRay& ray, const P
 
 // A ray from the surface in unit direction d, its origin offset to the side d leaves on.
 inline PeerRay leavingRay(const PeerSurface& s, glm::vec3 d) {
-    const glm::vec3 side = glm::dot(s.geometricNormal, d) > 0.0f ? s.geometricNormal
-                                                                 : -s.geometricNormal;
+    const glm::vec3 side =
+        glm::dot(s.geometricNormal, d) > 0.0f ? s.geometricNormal : -s.geometricNormal;
     return {offsetRayOrigin(s.position, side, s.magnitude), d};
 }
 
@@ -100,8 +100,8 @@ struct RayCount {
 // Local Phong colour seen along -view: ambient once, then for each unshadowed light in
 // front of the surface Lc * (kd N.L + ks max(R.V, 0)^shininess).
 template <typename Worker>
-glm::vec3 shadePhong(const PeerScene& scene, Worker& worker, const PeerSurface& s,
-                     glm::vec3 view, RayCount& count) {
+glm::vec3 shadePhong(const PeerScene& scene, Worker& worker, const PeerSurface& s, glm::vec3 view,
+                     RayCount& count) {
     glm::vec3 colour = scene.ambient;
     for (const PeerLight& light : scene.lights) {
         const glm::vec3 l = normalizeOr(light.position - s.position, glm::vec3(0.0f));

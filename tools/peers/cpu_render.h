@@ -2,8 +2,8 @@
 // clamped samples averaged, bytes as floor(c * 255 + 0.5).
 #pragma once
 
-#include "cpu_model.h"
 #include "base/image_io.h"
+#include "cpu_model.h"
 
 #include <glm/glm.hpp>
 
@@ -77,7 +77,8 @@ std::uint64_t renderImage(const PeerScene& scene, const Intersector& intersector
             for (int i = 0; i < settings.width; ++i) {
                 for (glm::vec2 o : offsets) {
                     const float x = (2.0f * (float(i) + o.x) / float(settings.width) - 1.0f) * tanX;
-                    const float y = (1.0f - 2.0f * (float(j) + o.y) / float(settings.height)) * tanY;
+                    const float y =
+                        (1.0f - 2.0f * (float(j) + o.y) / float(settings.height)) * tanY;
                     primary.push_back({glm::vec3(0.0f), glm::normalize(glm::vec3(x, y, -1.0f))});
                 }
             }

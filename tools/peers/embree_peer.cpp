@@ -1,5 +1,5 @@
-// embree_peer: the model of docs/model.md on the CPU with Intel Embree 3 as the intersector, the peer
-// a user with a CPU would pick for scenes of many triangles. tools/bench runs it beside
+// embree_peer: the model of docs/model.md on the CPU with Intel Embree 3 as the intersector, the
+// peer a user with a CPU would pick for scenes of many triangles. tools/bench runs it beside
 // Raytracer and brute_force_peer.
 //
 // Geometry: one RTC_GEOMETRY_TYPE_TRIANGLE mesh over a shared vertex buffer, and the
@@ -45,13 +45,20 @@ struct EmbreeState {
 // Embree 3 has no error-string function (Embree 4 added one).
 const char* errorName(RTCError error) {
     switch (error) {
-    case RTC_ERROR_NONE: return "RTC_ERROR_NONE";
-    case RTC_ERROR_UNKNOWN: return "RTC_ERROR_UNKNOWN";
-    case RTC_ERROR_INVALID_ARGUMENT: return "RTC_ERROR_INVALID_ARGUMENT";
-    case RTC_ERROR_INVALID_OPERATION: return "RTC_ERROR_INVALID_OPERATION";
-    case RTC_ERROR_OUT_OF_MEMORY: return "RTC_ERROR_OUT_OF_MEMORY";
-    case RTC_ERROR_UNSUPPORTED_CPU: return "RTC_ERROR_UNSUPPORTED_CPU";
-    case RTC_ERROR_CANCELLED: return "RTC_ERROR_CANCELLED";
+    case RTC_ERROR_NONE:
+        return "RTC_ERROR_NONE";
+    case RTC_ERROR_UNKNOWN:
+        return "RTC_ERROR_UNKNOWN";
+    case RTC_ERROR_INVALID_ARGUMENT:
+        return "RTC_ERROR_INVALID_ARGUMENT";
+    case RTC_ERROR_INVALID_OPERATION:
+        return "RTC_ERROR_INVALID_OPERATION";
+    case RTC_ERROR_OUT_OF_MEMORY:
+        return "RTC_ERROR_OUT_OF_MEMORY";
+    case RTC_ERROR_UNSUPPORTED_CPU:
+        return "RTC_ERROR_UNSUPPORTED_CPU";
+    case RTC_ERROR_CANCELLED:
+        return "RTC_ERROR_CANCELLED";
     }
     return "an unknown RTCError";
 }
@@ -161,9 +168,9 @@ struct EmbreeIntersector {
 void addSpheres(EmbreeState& s, const PeerScene& scene) {
     if (scene.spheres.empty()) return;
     RTCGeometry geometry = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-    auto* points = static_cast<glm::vec4*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, sizeof(glm::vec4),
-        scene.spheres.size()));
+    auto* points = static_cast<glm::vec4*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
+                                sizeof(glm::vec4), scene.spheres.size()));
     checkDevice(s.device, "allocating the sphere buffer");
     std::copy(scene.spheres.begin(), scene.spheres.end(), points); // centre xyz, radius w
     rtcCommitGeometry(geometry);
@@ -175,12 +182,12 @@ void addTriangles(EmbreeState& s, const PeerScene& scene) {
     if (scene.triangles.empty()) return;
     RTCGeometry geometry = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_TRIANGLE);
     // Embree reads 16 bytes at the last vertex; rtcSetNewGeometryBuffer pads for that.
-    auto* vertices = static_cast<glm::vec3*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(glm::vec3),
-        scene.positions.size()));
-    auto* indices = static_cast<glm::uvec3*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(glm::uvec3),
-        scene.triangles.size()));
+    auto* vertices = static_cast<glm::vec3*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                sizeof(glm::vec3), scene.positions.size()));
+    auto* indices = static_cast<glm::uvec3*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                sizeof(glm::uvec3), scene.triangles.size()));
     checkDevice(s.device, "allocating the triangle buffers");
     std::copy(scene.positions.begin(), scene.positions.end(), vertices);
     std::copy(scene.triangles.begin(), scene.triangles.end(), indices);

@@ -111,11 +111,12 @@ std::string benchJson(const PeerOptions& o, const PeerScene& scene, const PeerRe
          << ", \"height\": " << o.render.height << ", \"spp\": " << o.render.spp
          << ", \"depth\": " << o.render.depth << ", \"frames\": " << o.benchFrames
          << ", \"device\": " << jsonString(peer.device)
-         << ", \"wall_ms_median\": " << jsonNumber(wallMedian)
-         << ", \"wall_ms_min\": " << jsonNumber(*std::min_element(t.frameMs.begin(), t.frameMs.end()))
+         << ", \"wall_ms_median\": " << jsonNumber(wallMedian) << ", \"wall_ms_min\": "
+         << jsonNumber(*std::min_element(t.frameMs.begin(), t.frameMs.end()))
          << ", \"gpu_ms_median\": null, \"startup_ms\": " << jsonNumber(t.startupMs)
          << ", \"parse_ms\": " << jsonNumber(t.parseMs)
-         << ", \"prepare_ms\": " << jsonNumber(t.prepareMs) << ", \"build_ms\": " << jsonNumber(t.buildMs)
+         << ", \"prepare_ms\": " << jsonNumber(t.prepareMs)
+         << ", \"build_ms\": " << jsonNumber(t.buildMs)
          << ", \"gpu_bytes\": null, \"memory_bytes\": " << peer.memoryBytes
          << ", \"spheres\": " << scene.spheres.size() << ", \"triangles\": " << scene.fileTriangles
          << ", \"lights\": " << scene.lights.size() << ", \"threads\": " << o.threads

@@ -18,7 +18,7 @@ struct PeerOptions {
     std::filesystem::path scenePath;
     std::filesystem::path outputPath; // empty: no PNG
     PeerRenderSettings render;
-    int threads = 2;    // render threads (and the peer's own pool, where it has one)
+    int threads = 2;     // render threads (and the peer's own pool, where it has one)
     int benchFrames = 0; // 0: no benchmark
 };
 

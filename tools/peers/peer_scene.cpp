@@ -50,7 +50,8 @@ PeerScene makePeerScene(const Scene& scene) {
         glm::uvec3 ids;
         for (int k = 0; k < 3; ++k) {
             const glm::vec3 p(v[k].position);
-            const PositionKey key{std::bit_cast<std::uint32_t>(p.x), std::bit_cast<std::uint32_t>(p.y),
+            const PositionKey key{std::bit_cast<std::uint32_t>(p.x),
+                                  std::bit_cast<std::uint32_t>(p.y),
                                   std::bit_cast<std::uint32_t>(p.z)};
             const auto [it, added] = index.try_emplace(key, std::uint32_t(out.positions.size()));
             if (added) out.positions.push_back(p);

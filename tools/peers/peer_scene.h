@@ -31,11 +31,11 @@ struct PeerScene {
     glm::vec3 ambient{0.0f};
     std::vector<glm::vec4> spheres; // centre in xyz, radius in w
     std::vector<PeerMaterial> sphereMaterials;
-    std::vector<glm::vec3> positions;      // distinct vertex positions
-    std::vector<glm::uvec3> triangles;     // indices into positions; zero-area ones dropped
-    std::vector<PeerCorner> corners;       // 3 per kept triangle, in vertex order
+    std::vector<glm::vec3> positions;  // distinct vertex positions
+    std::vector<glm::uvec3> triangles; // indices into positions; zero-area ones dropped
+    std::vector<PeerCorner> corners;   // 3 per kept triangle, in vertex order
     std::vector<PeerLight> lights;
-    std::size_t fileTriangles = 0;         // as in the file, zero-area ones included
+    std::size_t fileTriangles = 0; // as in the file, zero-area ones included
 };
 
 // Rounds to float, shares identical positions, drops triangles of zero area (no ray

@@ -18,7 +18,7 @@
 // Moves p off its surface along the unit geometric normal n, which points to the side
 // the new ray leaves on.
 inline glm::vec3 offsetRayOrigin(glm::vec3 p, glm::vec3 n, glm::vec3 magnitude) {
-    constexpr float originBand = 1.0f / 32.0f;   // coordinates below scale/32: absolute step
+    constexpr float originBand = 1.0f / 32.0f;    // coordinates below scale/32: absolute step
     constexpr float floatScale = 1.0f / 65536.0f; // absolute step: scale/65536 times n
     constexpr float intScale = 256.0f;            // elsewhere: 256 ULPs of magnitude times n
     const float scale = std::max(magnitude.x, std::max(magnitude.y, magnitude.z));

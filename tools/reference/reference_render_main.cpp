@@ -1,7 +1,7 @@
 // reference_render SCENE -o out.png [options]: the CPU reference renderer as a tool.
 #include "reference_renderer.h"
-#include "tool_arguments.h"
 #include "scene/scene_loader.h"
+#include "tool_arguments.h"
 
 #include <charconv>
 #include <chrono>
@@ -76,7 +76,8 @@ int main(int argc, char** argv) {
                 settings.fovDegrees = parseFov(arg, value());
             } else if (arg == "--camera-pos") {
                 settings.cameraPosition = parseTriple(arg, value(), true);
-                if (!targetGiven) settings.cameraTarget = settings.cameraPosition + glm::dvec3(0, 0, -1);
+                if (!targetGiven)
+                    settings.cameraTarget = settings.cameraPosition + glm::dvec3(0, 0, -1);
             } else if (arg == "--camera-target") {
                 settings.cameraTarget = parseTriple(arg, value(), true);
                 targetGiven = true;

@@ -285,7 +285,8 @@ Camera makeCamera(const ReferenceSettings& settings) {
     if (glm::length(view) == 0) throw std::invalid_argument("camera target equals camera position");
     camera.forward = glm::normalize(view);
     const dvec3 side = glm::cross(camera.forward, settings.cameraUp);
-    if (glm::length(side) < 1e-9 * glm::length(settings.cameraUp) || glm::length(settings.cameraUp) == 0)
+    if (glm::length(side) < 1e-9 * glm::length(settings.cameraUp) ||
+        glm::length(settings.cameraUp) == 0)
         throw std::invalid_argument("camera up is zero or parallel to the view direction");
     camera.right = glm::normalize(side);
     camera.up = glm::cross(camera.right, camera.forward);

@@ -2,8 +2,8 @@
 // against the CPU reference's range (reference_range.h), as CSV on stdout. Used by
 // tools/stability and tools/speed_accuracy; the stability test calls the library.
 #include "reference_range.h"
-#include "tool_arguments.h"
 #include "scene/scene_loader.h"
+#include "tool_arguments.h"
 
 #include <charconv>
 #include <cstdio>

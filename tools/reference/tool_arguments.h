@@ -23,7 +23,8 @@ template <typename T> T parseNumber(std::string_view option, std::string_view te
     T value{};
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (error != std::errc() || end != text.data() + text.size() || text.empty())
-        throw UsageError(std::string(option) + " expects a number, got '" + std::string(text) + "'");
+        throw UsageError(std::string(option) + " expects a number, got '" + std::string(text) +
+                         "'");
     if constexpr (std::is_floating_point_v<T>)
         if (!std::isfinite(value))
             throw UsageError(std::string(option) + " expects a finite number, got '" +

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Applies the committed .clang-format to every C++ and GLSL file of the project, or with
+# --check lists the files that differ from it and fails (CI runs the check).
+#
+#   tools/format.sh           reformat in place
+#   tools/format.sh --check   exit 1 and name the files when any file is not formatted
+#
+# GLSL is formatted as C-like code; shaders/.clang-format keeps its include order, which
+# matters there. Needs clang-format (Debian's clang-format package, version 14).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+mode=fix
+case "${1:-}" in
+    "") ;;
+    --check) mode=check ;;
+    -h | --help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "usage: $0 [--check]" >&2; exit 2 ;;
+esac
+command -v clang-format > /dev/null || { echo "format.sh: clang-format is not installed" >&2; exit 2; }
+
+mapfile -t files < <(git ls-files --cached --others --exclude-standard \
+    '*.cpp' '*.h' '*.comp' '*.glsl' | while read -r f; do [[ -f $f ]] && echo "$f"; done)
+if [[ $mode == fix ]]; then
+    clang-format -i "${files[@]}"
+    exit 0
+fi
+unformatted=()
+for file in "${files[@]}"; do
+    clang-format "$file" | cmp -s - "$file" || unformatted+=("$file")
+done
+if ((${#unformatted[@]})); then
+    echo "format.sh: ${#unformatted[@]} files differ from .clang-format (run tools/format.sh):"
+    printf '  %s\n' "${unformatted[@]}"
+    exit 1
+fi
+echo "format.sh: ${#files[@]} files formatted as .clang-format says"
