@@ -102,7 +102,7 @@ bool inShadow(SurfacePoint s, rvec3 lightPosition, rvec3 l) {
 // The highlight is compiled out when no material has ks > 0 (sceneHasSpecular, trace.comp;
 // it would add exactly 0).
 vec3 shadePhong(SurfacePoint s, rvec3 view) {
-    vec3 colour = params.ambient.rgb;
+    vec3 color = params.ambient.rgb;
     for (uint i = 0u; i < params.counts.z; ++i) {
         GpuLight light = lights[i];
         rvec3 lightPosition = light.position.xyz;
@@ -113,16 +113,16 @@ vec3 shadePhong(SurfacePoint s, rvec3 view) {
         if (inShadow(s, lightPosition, l)) continue;
         vec3 diffuse = s.kd * float(nDotL);
         if (!sceneHasSpecular) {
-            colour += light.color.rgb * diffuse;
+            color += light.color.rgb * diffuse;
             continue;
         }
         rvec3 r = 2.0 * nDotL * s.normal - l;
         float rDotV = float(dot(r, view));
         // pow(x, 0) is 1 for x > 0; the test keeps pow away from 0 and negative bases.
         vec3 specular = rDotV > 0.0 ? s.ks * pow(rDotV, s.shininess) : vec3(0.0);
-        colour += light.color.rgb * (diffuse + specular);
+        color += light.color.rgb * (diffuse + specular);
     }
-    return colour;
+    return color;
 }
 
 // The mirror ray at the surface: direction D - 2 dot(D, N) N with the facing shading normal.

@@ -94,19 +94,19 @@ layout(set = 0, binding = BINDING_ACCUMULATION, std430) buffer AccumulationBuffe
 // unrolled into a loop that carries the product of the ks seen so far (throughput).
 vec3 traceRay(Ray ray) {
     uint maxBounces = min(params.image.w, uint(MAX_DEPTH));
-    vec3 colour = vec3(0.0);
+    vec3 color = vec3(0.0);
     vec3 throughput = vec3(1.0);
     for (uint bounce = 0u;; ++bounce) {
         Hit hit = closestHit(ray);
-        if (hit.kind == HIT_NONE) return colour + throughput * params.background.rgb;
+        if (hit.kind == HIT_NONE) return color + throughput * params.background.rgb;
         SurfacePoint s = surfaceAt(ray, hit);
         vec3 local = shadePhong(s, -ray.direction);
         if (!sceneHasMirrors || all(equal(s.ks, vec3(0.0))) || bounce >= maxBounces)
-            return colour + throughput * local;
-        colour += throughput * (1.0 - s.ks) * local;
+            return color + throughput * local;
+        color += throughput * (1.0 - s.ks) * local;
         throughput *= s.ks;
         // Nothing further can contribute: same result, fewer rays.
-        if (all(equal(throughput, vec3(0.0)))) return colour;
+        if (all(equal(throughput, vec3(0.0)))) return color;
         ray = reflectedRay(ray, s);
     }
 }

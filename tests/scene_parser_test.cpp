@@ -402,7 +402,7 @@ TEST(SceneParserError, RadiusMustBePositive) {
     }
 }
 
-TEST(SceneParserError, NegativeColourOrShininess) {
+TEST(SceneParserError, NegativeColorOrShininess) {
     EXPECT_EQ(errorOf(header(1) + replaced(triangleText, "dif: 0 0.5 0", "dif: 0 -0.5 0")),
               "t.scene:11: error: negative colour value -0.5 in the triangle's vertex 2 'dif:'");
     EXPECT_EQ(errorOf(header(1) + replaced(sphereText, "spe: 0.5 0.5 0.5", "spe: 0.5 0.5\n-1e-9")),

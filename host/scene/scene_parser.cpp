@@ -63,7 +63,7 @@ std::string objects(std::uint64_t count) {
 
 constexpr Key position{"pos:", "position"}, radius{"rad:", "radius"}, normal{"nor:", "normal"},
     diffuse{"dif:", "'dif:'"}, specular{"spe:", "'spe:'"}, shininess{"shi:", "shininess"},
-    colour{"col:", "colour"}, ambient{"amb:", "ambient colour"};
+    color{"col:", "colour"}, ambient{"amb:", "ambient colour"};
 
 std::string describe(const Field& field) {
     if (!field.key) return field.object ? quote(field.object) : "the object count";
@@ -145,7 +145,7 @@ glm::dvec3 Reader::readVec3Field(const Field& field) {
 
 // "key: r g b". Negative is an error; above 1 is fine for lights and the ambient
 // colour (bright lights) but gets a warning for dif and spe (the mix extrapolates).
-glm::dvec3 Reader::readColourField(const Field& field, bool warnAboveOne) {
+glm::dvec3 Reader::readColorField(const Field& field, bool warnAboveOne) {
     expectKey(field);
     glm::dvec3 c;
     bool warned = false;
@@ -167,8 +167,8 @@ glm::dvec3 Reader::readColourField(const Field& field, bool warnAboveOne) {
 
 Material Reader::readMaterial(const char* object, int vertex) {
     Material m;
-    m.diffuse = readColourField({&diffuse, object, vertex}, true);
-    m.specular = readColourField({&specular, object, vertex}, true);
+    m.diffuse = readColorField({&diffuse, object, vertex}, true);
+    m.specular = readColorField({&specular, object, vertex}, true);
     const Field field{&shininess, object, vertex};
     const Number s = readScalarField(field);
     if (s.value < 0.0)
@@ -213,7 +213,7 @@ Light Reader::readLight() {
     Light light;
     previous = {nullptr, "light"};
     light.position = readVec3Field({&position, "light"});
-    light.color = readColourField({&colour, "light"}, false);
+    light.color = readColorField({&color, "light"}, false);
     return light;
 }
 
@@ -235,7 +235,7 @@ std::uint64_t Reader::readObjectCount() {
 
 void Reader::readHeader() {
     claimedCount = readObjectCount();
-    scene.ambient = readColourField({&ambient}, false);
+    scene.ambient = readColorField({&ambient}, false);
 }
 
 // Once a few thousand objects are read, reserves room for the rest of the text at

@@ -72,7 +72,7 @@ struct Reader {
     Number readNumber(const Field& field);
     Number readScalarField(const Field& field);
     glm::dvec3 readVec3Field(const Field& field);
-    glm::dvec3 readColourField(const Field& field, bool warnAboveOne);
+    glm::dvec3 readColorField(const Field& field, bool warnAboveOne);
     Material readMaterial(const char* object, int vertex);
     Sphere readSphere();
     Triangle readTriangle(int keywordLine);

@@ -102,7 +102,7 @@ struct RayCount {
 template <typename Worker>
 glm::vec3 shadePhong(const PeerScene& scene, Worker& worker, const PeerSurface& s, glm::vec3 view,
                      RayCount& count) {
-    glm::vec3 colour = scene.ambient;
+    glm::vec3 color = scene.ambient;
     for (const PeerLight& light : scene.lights) {
         const glm::vec3 l = normalizeOr(light.position - s.position, glm::vec3(0.0f));
         const float nDotL = glm::dot(s.normal, l);
@@ -118,9 +118,9 @@ glm::vec3 shadePhong(const PeerScene& scene, Worker& worker, const PeerSurface& 
         // pow(x, 0) is 1 for x > 0; the test keeps pow away from 0 and negative bases.
         const glm::vec3 specular =
             rDotV > 0.0f ? s.material.ks * std::pow(rDotV, s.material.shininess) : glm::vec3(0.0f);
-        colour += light.color * (s.material.kd * nDotL + specular);
+        color += light.color * (s.material.kd * nDotL + specular);
     }
-    return colour;
+    return color;
 }
 
 // The model's recursion colour = (1 - ks) local + ks colour(reflected) (local alone when
@@ -128,18 +128,18 @@ glm::vec3 shadePhong(const PeerScene& scene, Worker& worker, const PeerSurface& 
 template <typename Worker>
 glm::vec3 traceRay(const PeerScene& scene, Worker& worker, PeerRay ray, int depth,
                    glm::vec3 background, RayCount& count, const PeerHit* firstHit = nullptr) {
-    glm::vec3 colour(0.0f), throughput(1.0f);
+    glm::vec3 color(0.0f), throughput(1.0f);
     for (int bounce = 0;; ++bounce) {
         ++count.rays;
         const PeerHit hit = bounce == 0 && firstHit ? *firstHit : worker.closestHit(ray);
-        if (hit.kind == HitKind::none) return colour + throughput * background;
+        if (hit.kind == HitKind::none) return color + throughput * background;
         const PeerSurface s = surfaceAt(scene, ray, hit);
         const glm::vec3 local = shadePhong(scene, worker, s, -ray.direction, count);
         const glm::vec3 ks = s.material.ks;
-        if (ks == glm::vec3(0.0f) || bounce >= depth) return colour + throughput * local;
-        colour += throughput * (1.0f - ks) * local;
+        if (ks == glm::vec3(0.0f) || bounce >= depth) return color + throughput * local;
+        color += throughput * (1.0f - ks) * local;
         throughput *= ks;
-        if (throughput == glm::vec3(0.0f)) return colour; // nothing further can contribute
+        if (throughput == glm::vec3(0.0f)) return color; // nothing further can contribute
         ray = leavingRay(s, glm::normalize(glm::reflect(ray.direction, s.normal)));
     }
 }

@@ -40,7 +40,7 @@ inline std::vector<glm::vec2> sampleOffsets(int spp) {
 }
 
 // Clamped to [0, 1] per channel; NaN goes to 0 (glm::clamp would keep it).
-inline glm::vec3 clampColour(glm::vec3 c) {
+inline glm::vec3 clampColor(glm::vec3 c) {
     for (int k = 0; k < 3; ++k)
         c[k] = c[k] > 0.0f ? std::min(c[k], 1.0f) : 0.0f;
     return c;
@@ -95,9 +95,9 @@ std::uint64_t renderImage(const PeerScene& scene, const Intersector& intersector
             for (int i = 0; i < settings.width; ++i, out += 4) {
                 glm::vec3 sum(0.0f);
                 for (std::size_t k = 0; k < offsets.size(); ++k, ++r) {
-                    sum += clampColour(traceRay(scene, worker, primary[r], settings.depth,
-                                                settings.background, count,
-                                                batched ? &hits[r] : nullptr));
+                    sum += clampColor(traceRay(scene, worker, primary[r], settings.depth,
+                                               settings.background, count,
+                                               batched ? &hits[r] : nullptr));
                 }
                 sum /= float(offsets.size());
                 out[0] = quantize(sum.x);

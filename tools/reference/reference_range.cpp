@@ -48,11 +48,11 @@ void ReferenceRange::ensure(int x, int y) {
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
             if (dx == 0 && dy == 0) continue;
-            const glm::dvec3 colour =
+            const glm::dvec3 color =
                 traceEyeRay(scene_, settings_,
                             eyeDirection(settings_, x + 0.5 + dx * delta_, y + 0.5 + dy * delta_));
             for (int c = 0; c < 3; ++c) {
-                const auto byte = std::uint8_t(quantizeChannel(colour[c], settings_.truncate));
+                const auto byte = std::uint8_t(quantizeChannel(color[c], settings_.truncate));
                 std::uint8_t& lo = low_[p * 3 + std::size_t(c)];
                 std::uint8_t& hi = high_[p * 3 + std::size_t(c)];
                 lo = std::min(lo, byte);

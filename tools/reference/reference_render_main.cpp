@@ -37,7 +37,7 @@ using tool_arguments::parseNumber;
 using tool_arguments::parseTriple;
 using tool_arguments::UsageError;
 
-glm::dvec3 parseColour(std::string_view option, std::string_view text) {
+glm::dvec3 parseColor(std::string_view option, std::string_view text) {
     return parseTriple(option, text, false);
 }
 
@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
             } else if (arg == "--threads") {
                 threads = parseCount(arg, value(), 0);
             } else if (arg == "--background") {
-                settings.background = parseColour(arg, value());
+                settings.background = parseColor(arg, value());
             } else if (arg == "--fov") {
                 settings.fovDegrees = parseFov(arg, value());
             } else if (arg == "--camera-pos") {

@@ -236,11 +236,11 @@ struct Bounce {
 dvec3 traceRay(const World& world, const ReferenceSettings& settings, Ray ray,
                std::vector<Bounce>& path) {
     path.clear();
-    dvec3 colour = settings.background;
+    dvec3 color = settings.background;
     for (int bounce = 0;; ++bounce) {
         Hit hit;
         if (!closestHit(world, ray, hit)) {
-            colour = settings.background;
+            color = settings.background;
             break;
         }
         const SurfacePoint p = surfaceAt(world, ray, hit);
@@ -248,7 +248,7 @@ dvec3 traceRay(const World& world, const ReferenceSettings& settings, Ray ray,
         const dvec3 local = shadeLocal(world, p, view, hit.id);
         const dvec3 ks = p.material.specular;
         if (bounce >= settings.depth || ks == dvec3(0.0)) {
-            colour = local;
+            color = local;
             break;
         }
         path.push_back({local, ks});
@@ -256,8 +256,8 @@ dvec3 traceRay(const World& world, const ReferenceSettings& settings, Ray ray,
         ray = Ray{p.position, glm::normalize(reflected), hit.id};
     }
     for (std::size_t k = path.size(); k-- > 0;)
-        colour = (1.0 - path[k].ks) * path[k].local + path[k].ks * colour;
-    return colour;
+        color = (1.0 - path[k].ks) * path[k].local + path[k].ks * color;
+    return color;
 }
 
 struct Camera {
@@ -317,8 +317,8 @@ double clampChannel(double c) {
     return c > 0 ? std::min(c, 1.0) : 0.0; // also sends NaN to 0
 }
 
-dvec3 pixelColour(const World& world, const ReferenceSettings& settings, const Camera& camera,
-                  int i, int j, std::vector<Bounce>& path) {
+dvec3 pixelColor(const World& world, const ReferenceSettings& settings, const Camera& camera, int i,
+                 int j, std::vector<Bounce>& path) {
     dvec3 sum(0.0);
     for (glm::dvec2 sample : camera.samples) {
         const dvec3 c =
@@ -345,7 +345,7 @@ glm::dvec3 tracePixel(const Scene& scene, const ReferenceSettings& settings, int
     const Camera camera = makeCamera(settings);
     const World world = prepareWorld(scene);
     std::vector<Bounce> path;
-    return pixelColour(world, settings, camera, i, j, path);
+    return pixelColor(world, settings, camera, i, j, path);
 }
 
 Image8 renderReference(const Scene& scene, const ReferenceSettings& settings, int threads) {
@@ -367,7 +367,7 @@ Image8 renderReference(const Scene& scene, const ReferenceSettings& settings, in
             std::vector<Bounce> path;
             for (int j = nextRow++; j < settings.height; j = nextRow++) {
                 for (int i = 0; i < settings.width; ++i) {
-                    const dvec3 c = pixelColour(world, settings, camera, i, j, path);
+                    const dvec3 c = pixelColor(world, settings, camera, i, j, path);
                     std::uint8_t* out =
                         &image.rgba[(std::size_t(j) * std::size_t(image.width) + std::size_t(i)) *
                                     4];
