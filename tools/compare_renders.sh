@@ -4,6 +4,11 @@
 # faster kernel that claims the same images).
 #
 #   tools/compare_renders.sh OLD_RAYTRACER NEW_RAYTRACER [SCENE_DIR_OR_FILE...] [-- RAYTRACER_ARGS...]
+#   tools/compare_renders.sh --commit REV NEW_RAYTRACER [...]
+#
+# --commit REV builds Raytracer of that commit (a detached git worktree, built in
+# build-compare/REV; about a minute on 2 cores) and uses it as OLD: e.g.
+# `tools/compare_renders.sh --commit HEAD~1 build/Raytracer` after a refactoring.
 #
 # Without scene arguments: scenes/, scenes/stress/ and the classic scenes beside the
 # checkout (../shared/scenes) when present. Arguments after -- go to both builds
@@ -11,16 +16,31 @@
 # Exit status: 0 when every pair is identical, 1 when any differs or fails, 2 on usage.
 set -euo pipefail
 
-usage() { sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; }
 if [[ ${1:-} == -h || ${1:-} == --help ]]; then usage; exit 0; fi
 if (($# < 2)); then usage >&2; exit 2; fi
+root=$(cd "$(dirname "$0")/.." && pwd)
+if [[ $1 == --commit ]]; then
+    (($# >= 3)) || { usage >&2; exit 2; }
+    revision=$(git -C "$root" rev-parse --verify --short "$2^{commit}") ||
+        { echo "compare_renders: $2 is not a commit" >&2; exit 2; }
+    build=$root/build-compare/$revision
+    if [[ ! -x $build/Raytracer ]]; then
+        source_tree=$build/source
+        rm -rf "$source_tree"
+        git -C "$root" worktree add --detach --force "$source_tree" "$revision" > /dev/null
+        cmake -S "$source_tree" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
+        cmake --build "$build" --target Raytracer -j "$(nproc)" > /dev/null
+        git -C "$root" worktree remove --force "$source_tree"
+    fi
+    set -- "$build/Raytracer" "${@:3}"
+fi
 old=$1 new=$2
 shift 2
 for program in "$old" "$new"; do
     [[ -x $program ]] || { echo "compare_renders: $program is not an executable" >&2; exit 2; }
 done
 
-root=$(cd "$(dirname "$0")/.." && pwd)
 inputs=() extra=()
 while (($#)); do
     if [[ $1 == -- ]]; then shift; extra=("$@"); break; fi
