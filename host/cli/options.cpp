@@ -92,6 +92,12 @@ bool parseKernelOption(const std::string& arg, const std::function<const std::st
 
 } // namespace
 
+const ChoiceNames<Acceleration>& accelerationNames() {
+    static const ChoiceNames<Acceleration> names = {
+        {"auto", Acceleration::Auto}, {"bvh", Acceleration::Bvh}, {"none", Acceleration::None}};
+    return names;
+}
+
 std::string usageText() {
     return "Usage: Raytracer SCENE [options]\n"
            "Renders SCENE in a window (headless to a PNG when there is no display).\n"
@@ -199,15 +205,7 @@ Options parseOptions(int argc, const char* const* argv) {
         } else if (arg == "--device") {
             options.device = value();
         } else if (arg == "--accel") {
-            const std::string& mode = value();
-            if (mode == "auto")
-                options.acceleration = Acceleration::Auto;
-            else if (mode == "bvh")
-                options.acceleration = Acceleration::Bvh;
-            else if (mode == "none")
-                options.acceleration = Acceleration::None;
-            else
-                throw UsageError("--accel expects auto, bvh or none, got '" + mode + "'");
+            options.acceleration = parseChoice(arg, value(), accelerationNames());
         } else if (arg == "--validate") {
             options.validate = true;
         } else if (arg == "--no-cache") {
