@@ -1,5 +1,7 @@
 #include "cli/options.h"
 
+#include "cli/window_keys.h"
+
 #include "shared.h"
 
 #include <charconv>
@@ -146,10 +148,8 @@ std::string usageText() {
            "The window refines progressively, one or more samples per pixel per frame, up to\n"
            "--spp N if given (then it shows exactly the headless --spp N image), else 1024.\n"
            "Saving the scene file (or a --shader-dir source) re-renders it.\n"
-           "Window keys: Esc or Q quits; R reloads scene and shaders; P writes a screenshot\n"
-           "PNG (once refinement is done); V toggles vsync; C or Home resets the camera.\n"
-           "Camera: drag with the left button to orbit, wheel to dolly, drag with the right\n"
-           "button to look around; W/A/S/D move, Space/Left Shift go up/down.\n";
+           "\n" +
+           windowKeysHelp();
 }
 
 Options parseOptions(int argc, const char* const* argv) {
