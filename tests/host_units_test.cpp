@@ -6,12 +6,10 @@
 #include "render/renderer.h"
 #include "render/scene_packing.h"
 #include "render/trace_pipeline.h"
-#include "window/screenshot.h"
 
 #include <gtest/gtest.h>
 
 #include <map>
-#include <sstream>
 
 namespace {
 
@@ -271,53 +269,6 @@ TEST(ScenePacking, Fp64KeepsGeometryInDoubleAndItsBoxesHoldIt) {
                 EXPECT_GE(double(box[3 + axis]), p[axis]);
             }
         }
-}
-
-// The window's screenshot line: its command, parsed again, asks for the same image.
-TEST(ScreenshotCommand, ReproducesEveryChoiceThatChangesPixels) {
-    auto parse = [](const std::vector<std::string>& words) {
-        std::vector<const char*> argv = {"Raytracer"};
-        for (const std::string& word : words)
-            argv.push_back(word.c_str());
-        return parseOptions(int(argv.size()), argv.data());
-    };
-    auto words = [](const std::string& command) {
-        std::istringstream stream(command);
-        std::vector<std::string> list;
-        for (std::string word; stream >> word;)
-            list.push_back(word);
-        return std::vector<std::string>(list.begin() + 1, list.end()); // without "Raytracer"
-    };
-    const Options plain = parse({"a.scene"});
-    const std::string plainCommand = headlessCommand(plain, plain.camera, 64, 48, 4);
-    EXPECT_NE(plainCommand.find("--depth 5 --fov 60"), std::string::npos) << plainCommand;
-    for (const char* absent : {"--background", "--sampler", "--seed", "--precision",
-                               "--sphere-test", "--triangle-test", "--offset", "--shader-dir"})
-        EXPECT_EQ(plainCommand.find(absent), std::string::npos) << absent << " in " << plainCommand;
-
-    const Options shown = parse(
-        {"a.scene",     "--depth",       "2",          "--fov",           "33.3",    "--background",
-         "0.1,0.2,0.3", "--sampler",     "stratified", "--seed",          "7",       "--precision",
-         "fp64",        "--sphere-test", "naive",      "--triangle-test", "mt",      "--offset",
-         "fixed",       "--camera-pos",  "1,2,3",      "--camera-target", "0.1,0,-1"});
-    const std::string command = headlessCommand(shown, shown.camera, 64, 48, 4);
-    const Options again = parse(words(command));
-    EXPECT_EQ(again.outputPath, "OUT.png");
-    EXPECT_EQ(again.width, 64u);
-    EXPECT_EQ(again.height, 48u);
-    EXPECT_EQ(again.samplesPerPixel, 4u);
-    EXPECT_EQ(again.depth, 2u);
-    EXPECT_EQ(again.fovDegrees, shown.fovDegrees);
-    EXPECT_EQ(again.background, shown.background);
-    EXPECT_EQ(again.camera.position, shown.camera.position);
-    EXPECT_EQ(again.camera.target, shown.camera.target);
-    EXPECT_EQ(again.camera.up, shown.camera.up);
-    EXPECT_EQ(again.kernel.sampler, Sampler::Stratified);
-    EXPECT_EQ(again.kernel.seed, 7u);
-    EXPECT_EQ(again.kernel.precision, Precision::Fp64);
-    EXPECT_EQ(again.kernel.sphereTest, SphereTest::Naive);
-    EXPECT_EQ(again.kernel.triangleTest, TriangleTest::MollerTrumbore);
-    EXPECT_EQ(again.kernel.offset, RayOffset::Fixed);
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The progressive view under Xvfb: with --spp N the window refines to exactly the headless
-# --spp N image (tolerance 0), also from a moved camera; P writes a PNG identical to it;
+# --spp N image (tolerance 0), also from a moved camera; P writes a PNG identical to it and
+# prints a headless command that renders it again;
 # V recreates the swapchain; a mouse drag moves the camera and C and Home reset it to the
 # default camera; Q quits with status 0 and the validation layer stays silent.
 #
@@ -47,6 +48,16 @@ run_inside_xvfb() {
             pass "P wrote $shot, identical to the headless render ($(cat shot-diff.txt))"
         else
             fail "P: $shot differs from moved.png: $(cat shot-diff.txt 2>/dev/null)"
+        fi
+        # The command printed with it, run as a shell would, renders the same PNG.
+        local replay
+        replay=$(grep -F "Screenshot: wrote" "$log" | head -n 1 |
+            sed -E 's/^.*; the same image headless: Raytracer //; s/ -o OUT\.png / -o replayed.png /')
+        if eval "env -u DISPLAY timeout 120 \"\$raytracer\" $replay" > replayed.log 2>&1 &&
+            "$image_diff" moved.png replayed.png --tolerance 0 --min-match 100 > replay-diff.txt 2>&1; then
+            pass "P's headless command renders the same PNG ($(cat replay-diff.txt))"
+        else
+            fail "P's headless command ($replay) differs from moved.png: $(cat replay-diff.txt 2>/dev/null) (log replayed.log)"
         fi
     else
         fail "P wrote no screenshot (log $log)"

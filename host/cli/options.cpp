@@ -1,5 +1,7 @@
 #include "cli/options.h"
 
+#include "cli/window_keys.h"
+
 #include "shared.h"
 
 #include <charconv>
@@ -92,6 +94,12 @@ bool parseKernelOption(const std::string& arg, const std::function<const std::st
 
 } // namespace
 
+const ChoiceNames<Acceleration>& accelerationNames() {
+    static const ChoiceNames<Acceleration> names = {
+        {"auto", Acceleration::Auto}, {"bvh", Acceleration::Bvh}, {"none", Acceleration::None}};
+    return names;
+}
+
 std::string usageText() {
     return "Usage: Raytracer SCENE [options]\n"
            "Renders SCENE in a window (headless to a PNG when there is no display).\n"
@@ -140,10 +148,8 @@ std::string usageText() {
            "The window refines progressively, one or more samples per pixel per frame, up to\n"
            "--spp N if given (then it shows exactly the headless --spp N image), else 1024.\n"
            "Saving the scene file (or a --shader-dir source) re-renders it.\n"
-           "Window keys: Esc or Q quits; R reloads scene and shaders; P writes a screenshot\n"
-           "PNG (once refinement is done); V toggles vsync; C or Home resets the camera.\n"
-           "Camera: drag with the left button to orbit, wheel to dolly, drag with the right\n"
-           "button to look around; W/A/S/D move, Space/Left Shift go up/down.\n";
+           "\n" +
+           windowKeysHelp();
 }
 
 Options parseOptions(int argc, const char* const* argv) {
@@ -199,15 +205,7 @@ Options parseOptions(int argc, const char* const* argv) {
         } else if (arg == "--device") {
             options.device = value();
         } else if (arg == "--accel") {
-            const std::string& mode = value();
-            if (mode == "auto")
-                options.acceleration = Acceleration::Auto;
-            else if (mode == "bvh")
-                options.acceleration = Acceleration::Bvh;
-            else if (mode == "none")
-                options.acceleration = Acceleration::None;
-            else
-                throw UsageError("--accel expects auto, bvh or none, got '" + mode + "'");
+            options.acceleration = parseChoice(arg, value(), accelerationNames());
         } else if (arg == "--validate") {
             options.validate = true;
         } else if (arg == "--no-cache") {

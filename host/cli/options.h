@@ -1,4 +1,5 @@
-// The command line, turned into one plain struct (README.md and --help list them).
+// The command line, turned into one plain struct (README.md and --help list them);
+// command_line.h writes it back.
 #pragma once
 
 #include "render/bvh.h"
@@ -42,7 +43,12 @@ struct Options {
     KernelChoices
         kernel; // --sampler, --seed, --precision, --sphere-test, --triangle-test, --offset
     bool generalKernel = false; // --general-kernel (hidden, for tools/kernel_costs)
+
+    bool operator==(const Options&) const = default; // commandLine's round trip is tested by it
 };
+
+// --accel's names, in the order --help lists them.
+const ChoiceNames<Acceleration>& accelerationNames();
 
 // A command line that does not make sense; what() is the message for the user.
 struct UsageError : std::runtime_error {

@@ -29,6 +29,8 @@ struct KernelChoices {
     SphereTest sphereTest = SphereTest::Stable;
     TriangleTest triangleTest = TriangleTest::Watertight;
     RayOffset offset = RayOffset::Scaled;
+
+    bool operator==(const KernelChoices&) const = default;
 };
 
 // Each choice's command-line name, in the order --help lists them.

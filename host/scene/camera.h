@@ -15,6 +15,8 @@ struct CameraPose {
     glm::dvec3 position{0.0};
     glm::dvec3 target{0.0, 0.0, -1.0};
     glm::dvec3 up{0.0, 1.0, 0.0};
+
+    bool operator==(const CameraPose&) const = default;
 };
 
 // Why a pose has no orientation (target on the eye, up along the view, non-finite), or

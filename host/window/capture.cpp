@@ -2,6 +2,7 @@
 // the headless image at the same settings) and the one JSON line of --bench-window.
 #include "window/capture.h"
 
+#include "cli/command_line.h"
 #include "window/screenshot.h"
 
 #include <chrono>

@@ -2,7 +2,6 @@
 
 #include "gpu/vk_check.h"
 
-#include <cstdio>
 #include <cstring>
 
 Image8 readOutputImage(const Context& context, const Renderer& renderer) {
@@ -44,39 +43,4 @@ std::filesystem::path nextScreenshotPath(const std::filesystem::path& folder,
         std::error_code error;
         if (!std::filesystem::exists(candidate, error)) return candidate;
     }
-}
-
-std::string headlessCommand(const Options& options, const CameraPose& camera, int width, int height,
-                            std::uint32_t spp) {
-    auto format = [](const char* pattern, auto... values) {
-        char text[256];
-        std::snprintf(text, sizeof text, pattern, values...);
-        return std::string(text);
-    };
-    auto triple = [&](const char* flag, const glm::dvec3& v) {
-        return format(" %s %.17g,%.17g,%.17g", flag, v.x, v.y, v.z);
-    };
-    std::string command = "Raytracer " + options.scenePath.string() + " -o OUT.png";
-    command += format(" --width %d --height %d --spp %u --depth %u --fov %.17g", width, height, spp,
-                      options.depth, options.fovDegrees);
-    command += triple("--camera-pos", camera.position) + triple("--camera-target", camera.target) +
-               triple("--camera-up", camera.up);
-    const Options defaults;
-    if (options.background != defaults.background)
-        command += triple("--background", options.background);
-    const KernelChoices &kernel = options.kernel, &plain = defaults.kernel;
-    if (kernel.sampler != plain.sampler)
-        command += " --sampler " + choiceName(samplerNames(), kernel.sampler);
-    if (kernel.seed != plain.seed) command += format(" --seed %u", kernel.seed);
-    if (kernel.precision != plain.precision)
-        command += " --precision " + choiceName(precisionNames(), kernel.precision);
-    if (kernel.sphereTest != plain.sphereTest)
-        command += " --sphere-test " + choiceName(sphereTestNames(), kernel.sphereTest);
-    if (kernel.triangleTest != plain.triangleTest)
-        command += " --triangle-test " + choiceName(triangleTestNames(), kernel.triangleTest);
-    if (kernel.offset != plain.offset)
-        command += " --offset " + choiceName(rayOffsetNames(), kernel.offset);
-    if (!options.shaderDirectory.empty())
-        command += " --shader-dir " + options.shaderDirectory.string();
-    return command;
 }

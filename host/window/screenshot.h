@@ -3,7 +3,6 @@
 #pragma once
 
 #include "base/image_io.h"
-#include "cli/options.h"
 #include "render/renderer.h"
 
 #include <filesystem>
@@ -16,9 +15,3 @@ Image8 readOutputImage(const Context& context, const Renderer& renderer);
 // STEM-screenshot-N.png in folder for the smallest N >= 1 not taken yet.
 std::filesystem::path nextScreenshotPath(const std::filesystem::path& folder,
                                          const std::string& stem);
-
-// The headless command line that renders the window's image (width x height, spp samples,
-// seen from camera): everything that changes pixels, --depth and --fov always, the
-// background, the kernel choices and --shader-dir when not the defaults.
-std::string headlessCommand(const Options& options, const CameraPose& camera, int width, int height,
-                            std::uint32_t spp);

@@ -11,6 +11,7 @@
 #include "window/window.h"
 
 #include "cli/render_settings.h"
+#include "cli/window_keys.h"
 #include "gpu/vk_check.h"
 #include "window/capture.h"
 #include "window/input.h"
@@ -28,11 +29,6 @@ namespace {
 // Refinement stops here without --spp: the image no longer changes visibly, and an idle
 // window should not keep a CPU device busy for ever.
 constexpr std::uint32_t kSampleCap = 1024;
-
-const char* const kHelpLine =
-    "Window: Esc or Q quits; R reloads scene and shaders; P writes a screenshot; V toggles vsync; "
-    "C or Home resets the camera; left drag orbits, wheel dollies, right drag looks, "
-    "W/A/S/D and Space/Left Shift fly.\n";
 
 // GLFW reports its errors through a callback. Before glfwInit succeeds they only say
 // that there is no display, which the caller handles by rendering headless; after it,
@@ -165,7 +161,7 @@ bool runWindow(const Options& options, const Scene& scene) {
     Viewer viewer;
     try {
         open(viewer, options, scene);
-        std::fputs(kHelpLine, stderr);
+        std::fputs(windowKeysLine().c_str(), stderr);
         runLoop(viewer);
     } catch (...) {
         shutDown(viewer);

@@ -1,0 +1,116 @@
+#include "cli/command_line.h"
+
+#include <cstdio>
+
+namespace {
+
+std::string formatted(const char* pattern, auto... values) {
+    char text[256];
+    std::snprintf(text, sizeof text, pattern, values...);
+    return text;
+}
+
+// %.17g: parseOptions' from_chars reads back the very same double.
+std::string exact(double value) {
+    return formatted("%.17g", value);
+}
+
+std::string triple(const glm::dvec3& v) {
+    return exact(v.x) + "," + exact(v.y) + "," + exact(v.z);
+}
+
+} // namespace
+
+std::string shellQuoted(const std::string& word) {
+    const bool plain =
+        !word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyz"
+                                                "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                "0123456789_@%+=:,./-") == std::string::npos;
+    if (plain) return word;
+    std::string quoted = "'";
+    for (char c : word)
+        quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+}
+
+std::string commandLine(const Options& options) {
+    const Options defaults;
+    std::string command = "Raytracer";
+    auto add = [&](const char* flag, const std::string& value) {
+        command += std::string(" ") + flag + " " + value;
+    };
+    auto addPath = [&](const char* flag, const std::filesystem::path& path) {
+        if (!path.empty()) add(flag, shellQuoted(path.string()));
+    };
+    auto addCount = [&](const char* flag, std::uint32_t value, std::uint32_t unless) {
+        if (value != unless) add(flag, std::to_string(value));
+    };
+    auto addSwitch = [&](const char* flag, bool on) {
+        if (on) command += std::string(" ") + flag;
+    };
+    auto addChoice = [&](const char* flag, const auto& names, auto value, auto unless) {
+        if (value != unless) add(flag, choiceName(names, value));
+    };
+
+    // What changes pixels first, in the order the window's screenshot line has always had.
+    if (!options.scenePath.empty()) command += " " + shellQuoted(options.scenePath.string());
+    addPath("-o", options.outputPath);
+    add("--width", std::to_string(options.width));
+    add("--height", std::to_string(options.height));
+    if (options.samplesGiven || options.samplesPerPixel != defaults.samplesPerPixel)
+        add("--spp", std::to_string(options.samplesPerPixel));
+    add("--depth", std::to_string(options.depth));
+    add("--fov", exact(options.fovDegrees));
+    // Without a target parseOptions looks down -z from the position, so the target is
+    // written only when it was given; with it, the whole pose.
+    const CameraPose &camera = options.camera, plainCamera;
+    if (options.cameraTargetGiven || camera.position != plainCamera.position)
+        add("--camera-pos", triple(camera.position));
+    if (options.cameraTargetGiven) add("--camera-target", triple(camera.target));
+    if (options.cameraTargetGiven || camera.up != plainCamera.up)
+        add("--camera-up", triple(camera.up));
+    if (options.background != defaults.background) add("--background", triple(options.background));
+    const KernelChoices &kernel = options.kernel, &plain = defaults.kernel;
+    addChoice("--sampler", samplerNames(), kernel.sampler, plain.sampler);
+    addCount("--seed", kernel.seed, plain.seed);
+    addChoice("--precision", precisionNames(), kernel.precision, plain.precision);
+    addChoice("--sphere-test", sphereTestNames(), kernel.sphereTest, plain.sphereTest);
+    addChoice("--triangle-test", triangleTestNames(), kernel.triangleTest, plain.triangleTest);
+    addChoice("--offset", rayOffsetNames(), kernel.offset, plain.offset);
+    addPath("--shader-dir", options.shaderDirectory);
+
+    // Then how the program runs, which leaves the image as it is.
+    addChoice("--accel", accelerationNames(), options.acceleration, defaults.acceleration);
+    if (!options.device.empty()) add("--device", shellQuoted(options.device));
+    addCount("--bench", options.benchFrames, 0);
+    addCount("--bench-window", options.benchWindowFrames, 0);
+    addCount("--region-size", options.regionSide, 0);
+    addPath("--dump-shaders", options.dumpShadersTo);
+    addSwitch("--validate", options.validate);
+    addSwitch("--no-cache", !options.useCache);
+    addSwitch("--progress", options.progress);
+    addSwitch("--window", options.forceWindow);
+    addSwitch("--redraw-continuously", options.redrawContinuously);
+    addSwitch("--general-kernel", options.generalKernel);
+    addSwitch("--help", options.showHelp);
+    return command;
+}
+
+std::string headlessCommand(const Options& options, const CameraPose& camera, int width, int height,
+                            std::uint32_t spp) {
+    Options view; // only what changes pixels is carried over
+    view.scenePath = options.scenePath;
+    view.outputPath = "OUT.png";
+    view.width = std::uint32_t(width);
+    view.height = std::uint32_t(height);
+    view.samplesPerPixel = spp;
+    view.samplesGiven = true;
+    view.depth = options.depth;
+    view.fovDegrees = options.fovDegrees;
+    view.camera = camera;
+    view.cameraTargetGiven = true; // the window's pose is a whole one
+    view.background = options.background;
+    view.kernel = options.kernel;
+    view.shaderDirectory = options.shaderDirectory;
+    return commandLine(view);
+}

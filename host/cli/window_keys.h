@@ -1,0 +1,39 @@
+// The window's keys and mouse gestures, described once: --help's section, the line the
+// window prints when it opens and the table in docs/window.md and README.md (which a test
+// keeps equal to windowKeysMarkdown) all come from this table. host/window/input.cpp
+// handles them; a test checks that it handles exactly the keys listed here.
+#pragma once
+
+#include <array>
+#include <string>
+#include <string_view>
+
+struct WindowKey {
+    std::string_view keys;   // as shown; several keys are joined by " or " or "/"
+    std::string_view effect; // a verb phrase: "keys effect" reads as a sentence
+    std::string_view detail; // more, for the docs' table only; may be empty
+};
+
+inline constexpr std::array<WindowKey, 10> kWindowKeys = {{
+    {"Esc or Q", "quits", ""},
+    {"R", "reloads the scene file and the shaders", ""},
+    {"P", "writes a screenshot PNG once refinement is done",
+     "(`SCENE-screenshot-N.png` in the current folder, so it is the headless image at the same "
+     "settings) and prints its path and the headless command that renders it"},
+    {"V", "toggles vsync", "(FIFO against MAILBOX, else IMMEDIATE)"},
+    {"C or Home", "resets the camera", "to the default one"},
+    {"left drag", "orbits", "around the scene"},
+    {"wheel", "dollies", "towards or away from the orbit centre"},
+    {"right drag", "looks around", "(turns the camera in place)"},
+    {"W/A/S/D", "fly forward, left, back and right", "while held, across the scene in about 4 s"},
+    {"Space/Left Shift", "fly up and down", "while held"},
+}};
+
+// --help's section: a heading, then one "  KEYS EFFECT" line per entry.
+std::string windowKeysHelp();
+
+// The line the window prints on stderr when it opens: "Window: Esc or Q quits; ...".
+std::string windowKeysLine();
+
+// A markdown table of every entry, with its detail.
+std::string windowKeysMarkdown();

@@ -1,0 +1,214 @@
+// The command line read and written back: for many option sets, parseOptions ->
+// commandLine -> (a POSIX shell splits the words) -> parseOptions gives equal Options, and
+// the text is the same when printed again. Also the window's headless command, word for
+// word. No Vulkan, no window.
+#include "cli/command_line.h"
+#include "cli/options.h"
+#include "shared.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+Options parse(const std::vector<std::string>& words) {
+    std::vector<const char*> argv = {"Raytracer"};
+    for (const std::string& word : words)
+        argv.push_back(word.c_str());
+    return parseOptions(int(argv.size()), argv.data());
+}
+
+// The words a POSIX shell makes of command's arguments (after "Raytracer"): the quoting
+// is checked by the shell itself, not by a second implementation of it.
+std::vector<std::string> shellWords(const std::string& command) {
+    const std::string program = "Raytracer";
+    EXPECT_EQ(command.substr(0, program.size()), program) << command;
+    const std::string script = "printf '%s\\0'" + command.substr(program.size());
+    FILE* shell = popen(script.c_str(), "r");
+    EXPECT_NE(shell, nullptr);
+    if (!shell) return {};
+    std::string output;
+    char buffer[4096];
+    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, shell)) > 0;)
+        output.append(buffer, n);
+    EXPECT_EQ(pclose(shell), 0) << script;
+    std::vector<std::string> words;
+    for (std::size_t start = 0, end; (end = output.find('\0', start)) != std::string::npos;
+         start = end + 1)
+        words.push_back(output.substr(start, end - start));
+    return words;
+}
+
+// Folders for --shader-dir whose names a shell would misread unquoted.
+std::filesystem::path shaderFolder(const std::string& name) {
+    const std::filesystem::path folder =
+        std::filesystem::temp_directory_path() / "raytracer-command-line-test" / name;
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "trace.comp") << "#version 460\n";
+    return folder;
+}
+
+std::vector<std::vector<std::string>> optionSets() {
+    const std::string odd = shaderFolder("it's a \"dir\" with $HOME, `x`, \\ and *").string();
+    const std::string spaced = shaderFolder("my shaders").string();
+    const std::string dashed = shaderFolder("-tab\there\nand a newline").string();
+    std::vector<std::vector<std::string>> sets = {
+        {"a.scene"},
+        {"a.scene", "-o", "out.png"},
+        {"scenes/my scene's \"copy\".scene", "-o", "out dir/it's.png"},
+        {"ünïcode.scene", "--output", "~/x.png"},
+        {"a.scene", "--width", "1", "--height", "16384"},
+        {"a.scene", "--width", "1023", "--height", "7"},
+        {"a.scene", "--spp", "1"},
+        {"a.scene", "--spp", "65536"},
+        {"a.scene", "--depth", "0"},
+        {"a.scene", "--depth", std::to_string(MAX_DEPTH)},
+        {"a.scene", "--fov", "33.3"},
+        {"a.scene", "--fov", "1e-300"},
+        {"a.scene", "--fov", "179.99999999999997"},
+        {"a.scene", "--background", "0,0,0"},
+        {"a.scene", "--background", "0.1,0.2,0.30000000000000004"},
+        {"a.scene", "--background", "1e300,0,2.5"},
+        {"a.scene", "--camera-pos", "1,2,3"},
+        {"a.scene", "--camera-target", "0.1,0,-1"},
+        {"a.scene", "--camera-up", "0,1,0.2"},
+        {"a.scene", "--camera-pos", "-3.5,4,2e-7", "--camera-up", "1e-9,-1,0"},
+        {"a.scene", "--camera-pos", "3,4,2", "--camera-target", "0,0,-8", "--camera-up", "0,1,0.2"},
+        {"a.scene", "--camera-target", "0,0,-1"}, // the default target, but given
+        {"a.scene", "--shader-dir", spaced},
+        {"a.scene", "--shader-dir", odd},
+        {"a.scene", "--shader-dir", dashed},
+        {"a.scene", "--accel", "auto"},
+        {"a.scene", "--accel", "bvh"},
+        {"a.scene", "--accel", "none"},
+        {"a.scene", "--device", "llvmpipe (LLVM 15.0.6, 256 bits)"},
+        {"a.scene", "--device", "1"},
+        {"a.scene", "-o", "b.png", "--bench", "3"},
+        {"a.scene", "--bench-window", "100000"},
+        {"a.scene", "--region-size", "64"},
+        {"--dump-shaders", "dumped shaders"},
+        {"--help"},
+        {"a.scene", "--validate", "--no-cache", "--progress", "--window", "--redraw-continuously",
+         "--general-kernel"},
+    };
+    for (const char* seed : {"0", "7", "4294967295"})
+        sets.push_back({"a.scene", "--seed", seed});
+    const std::vector<std::pair<const char*, std::vector<const char*>>> choices = {
+        {"--sampler", {"grid", "stratified", "r2"}}, {"--precision", {"fp32", "fp64"}},
+        {"--sphere-test", {"naive", "stable"}},      {"--triangle-test", {"mt", "watertight"}},
+        {"--offset", {"fixed", "scaled"}},
+    };
+    for (const auto& [flag, names] : choices)
+        for (const char* name : names)
+            sets.push_back({"a.scene", flag, name});
+    sets.push_back({"x y.scene",   "-o",
+                    "o.png",       "--width",
+                    "17",          "--height",
+                    "9",           "--spp",
+                    "5",           "--depth",
+                    "2",           "--fov",
+                    "47.5",        "--background",
+                    "0.25,0.5,1",  "--camera-pos",
+                    "0.5,-2,1e-3", "--camera-up",
+                    "0,0.9,0.1",   "--sampler",
+                    "grid",        "--seed",
+                    "11",          "--precision",
+                    "fp64",        "--sphere-test",
+                    "naive",       "--triangle-test",
+                    "mt",          "--offset",
+                    "fixed",       "--shader-dir",
+                    odd,           "--accel",
+                    "none",        "--device",
+                    "0",           "--bench",
+                    "2",           "--region-size",
+                    "32",          "--no-cache",
+                    "--progress"});
+    return sets;
+}
+
+std::string joined(const std::vector<std::string>& words) {
+    std::string text;
+    for (const std::string& word : words)
+        text += "[" + word + "] ";
+    return text;
+}
+
+TEST(CommandLine, ParsePrintParseGivesTheSameOptions) {
+    for (const std::vector<std::string>& words : optionSets()) {
+        const Options options = parse(words);
+        const std::string command = commandLine(options);
+        try {
+            const Options again = parse(shellWords(command));
+            EXPECT_TRUE(again == options) << "from " << joined(words) << "\nprinted " << command;
+            EXPECT_EQ(commandLine(again), command) << "from " << joined(words);
+        } catch (const UsageError& error) {
+            ADD_FAILURE() << "from " << joined(words) << "\nprinted " << command
+                          << "\nwhich does not parse: " << error.what();
+        }
+    }
+}
+
+TEST(CommandLine, DefaultsArePrintedOnlyWhereTheWindowAlwaysShowedThem) {
+    EXPECT_EQ(commandLine(parse({"a.scene"})),
+              "Raytracer a.scene --width 640 --height 480 --depth 5 --fov 60");
+}
+
+TEST(CommandLine, QuotesForAShellOnlyWhatNeedsIt) {
+    EXPECT_EQ(shellQuoted("scenes/a-b_c.scene"), "scenes/a-b_c.scene");
+    EXPECT_EQ(shellQuoted("a b"), "'a b'");
+    EXPECT_EQ(shellQuoted("it's"), "'it'\\''s'");
+    EXPECT_EQ(shellQuoted(""), "''");
+    EXPECT_EQ(shellQuoted("~/x"), "'~/x'");
+}
+
+// The window's screenshot line: exactly the text it has always printed, and parsed again it
+// asks for the same image.
+TEST(ScreenshotCommand, ReproducesEveryChoiceThatChangesPixels) {
+    const Options plain = parse({"a.scene"});
+    EXPECT_EQ(headlessCommand(plain, plain.camera, 64, 48, 4),
+              "Raytracer a.scene -o OUT.png --width 64 --height 48 --spp 4 --depth 5 --fov 60 "
+              "--camera-pos 0,0,0 --camera-target 0,0,-1 --camera-up 0,1,0");
+
+    const Options shown = parse({"a.scene",    "--depth",         "2",           "--fov",
+                                 "33.3",       "--background",    "0.1,0.2,0.3", "--sampler",
+                                 "stratified", "--seed",          "7",           "--precision",
+                                 "fp64",       "--sphere-test",   "naive",       "--triangle-test",
+                                 "mt",         "--offset",        "fixed",       "--camera-pos",
+                                 "1,2,3",      "--camera-target", "0.1,0,-1",    "--accel",
+                                 "none",       "--device",        "1",           "--no-cache"});
+    const std::string command = headlessCommand(shown, shown.camera, 64, 48, 4);
+    EXPECT_EQ(
+        command,
+        "Raytracer a.scene -o OUT.png --width 64 --height 48 --spp 4 --depth 2 "
+        "--fov 33.299999999999997 --camera-pos 1,2,3 --camera-target 0.10000000000000001,0,-1 "
+        "--camera-up 0,1,0 --background "
+        "0.10000000000000001,0.20000000000000001,0.29999999999999999 --sampler "
+        "stratified --seed 7 --precision fp64 --sphere-test naive --triangle-test mt "
+        "--offset fixed");
+    const Options again = parse(shellWords(command));
+    EXPECT_EQ(again.outputPath, "OUT.png");
+    EXPECT_EQ(again.width, 64u);
+    EXPECT_EQ(again.height, 48u);
+    EXPECT_EQ(again.samplesPerPixel, 4u);
+    EXPECT_EQ(again.depth, 2u);
+    EXPECT_EQ(again.fovDegrees, shown.fovDegrees);
+    EXPECT_EQ(again.background, shown.background);
+    EXPECT_TRUE(again.camera == shown.camera);
+    EXPECT_TRUE(again.kernel == shown.kernel);
+}
+
+TEST(ScreenshotCommand, QuotesTheSceneAndShaderFolder) {
+    Options options =
+        parse({"my scene.scene", "--shader-dir", shaderFolder("my shaders").string()});
+    const std::string command = headlessCommand(options, options.camera, 8, 8, 1);
+    const Options again = parse(shellWords(command));
+    EXPECT_EQ(again.scenePath, options.scenePath);
+    EXPECT_EQ(again.shaderDirectory, options.shaderDirectory);
+}
+
+} // namespace

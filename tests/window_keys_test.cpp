@@ -1,0 +1,100 @@
+// The window's keys table (host/cli/window_keys.h) is the one description of its keys:
+// README.md and docs/window.md hold its markdown between their markers, --help and the
+// window's line are made from it, and host/window/input.cpp handles exactly the keys and
+// gestures it lists. Reads the sources; no GLFW, no Vulkan.
+#include "cli/options.h"
+#include "cli/window_keys.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace {
+
+const std::filesystem::path kSourceDir = PROJECT_SOURCE_DIR;
+
+std::string readFile(const std::filesystem::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    EXPECT_TRUE(file) << "cannot read " << path;
+    std::stringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
+
+TEST(WindowKeys, DocsHoldTheTableBetweenTheirMarkers) {
+    const std::string begin = "<!-- window-keys:begin -->\n", end = "<!-- window-keys:end -->";
+    for (const char* doc : {"README.md", "docs/window.md"}) {
+        const std::string text = readFile(kSourceDir / doc);
+        const std::size_t first = text.find(begin), last = text.find(end);
+        ASSERT_NE(first, std::string::npos) << doc << " has no " << begin;
+        ASSERT_NE(last, std::string::npos) << doc << " has no " << end;
+        ASSERT_LT(first, last) << doc;
+        EXPECT_EQ(text.find(begin, first + 1), std::string::npos) << doc << ": markers twice";
+        EXPECT_EQ(text.substr(first + begin.size(), last - first - begin.size()),
+                  windowKeysMarkdown())
+            << doc << " between its markers should read (the table in host/cli/window_keys.h):\n"
+            << windowKeysMarkdown();
+    }
+}
+
+TEST(WindowKeys, HelpAndTheWindowLineListEveryEntry) {
+    const std::string help = usageText(), line = windowKeysLine();
+    EXPECT_NE(help.find(windowKeysHelp()), std::string::npos) << help;
+    EXPECT_EQ(line.rfind("Window: Esc or Q quits; ", 0), 0u) << line; // tests/window_test.sh
+    EXPECT_EQ(line.find('\n'), line.size() - 1) << line;
+    for (const WindowKey& key : kWindowKeys) {
+        const std::string sentence = std::string(key.keys) + " " + std::string(key.effect);
+        EXPECT_NE(help.find("  " + sentence + "\n"), std::string::npos) << sentence;
+        EXPECT_NE(line.find(sentence), std::string::npos) << sentence;
+    }
+}
+
+// The GLFW names of what the table lists: its keys split at " or " and "/", named as GLFW
+// does ("Left Shift" is GLFW_KEY_LEFT_SHIFT), and the gestures by the input they read.
+std::set<std::string> glfwNamesInTable() {
+    std::set<std::string> names;
+    for (const WindowKey& entry : kWindowKeys) {
+        std::string keys(entry.keys);
+        keys = std::regex_replace(keys, std::regex(" or "), "/");
+        std::stringstream list(keys);
+        for (std::string key; std::getline(list, key, '/');) {
+            if (key == "left drag")
+                names.insert("GLFW_MOUSE_BUTTON_LEFT");
+            else if (key == "right drag")
+                names.insert("GLFW_MOUSE_BUTTON_RIGHT");
+            else if (key == "wheel")
+                names.insert("glfwSetScrollCallback");
+            else if (key == "Esc")
+                names.insert("GLFW_KEY_ESCAPE");
+            else {
+                for (char& c : key)
+                    c = c == ' ' ? '_' : char(std::toupper(static_cast<unsigned char>(c)));
+                names.insert("GLFW_KEY_" + key);
+            }
+        }
+    }
+    return names;
+}
+
+TEST(WindowKeys, TheInputCodeHandlesExactlyTheListedKeys) {
+    const std::string input = readFile(kSourceDir / "host/window/input.cpp");
+    std::set<std::string> handled;
+    const std::regex glfwName(
+        "GLFW_KEY_[A-Z0-9_]+|GLFW_MOUSE_BUTTON_[A-Z0-9_]+|glfwSetScrollCallback");
+    for (auto it = std::sregex_iterator(input.begin(), input.end(), glfwName);
+         it != std::sregex_iterator(); ++it)
+        handled.insert(it->str());
+    const std::set<std::string> listed = glfwNamesInTable();
+    for (const std::string& name : listed)
+        EXPECT_TRUE(handled.count(name))
+            << "the table lists " << name << ", which host/window/input.cpp does not handle";
+    for (const std::string& name : handled)
+        EXPECT_TRUE(listed.count(name)) << "host/window/input.cpp handles " << name
+                                        << ", which the table in host/cli/window_keys.h omits";
+}
+
+} // namespace
