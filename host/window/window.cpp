@@ -10,6 +10,7 @@
 // viewer.h holds the state they share.
 #include "window/window.h"
 
+#include "base/scope_guard.h"
 #include "cli/render_settings.h"
 #include "gpu/vk_check.h"
 #include "window/capture.h"
@@ -163,14 +164,9 @@ bool runWindow(const Options& options, const Scene& scene) {
     if (!glfwInit()) return false; // no display: the caller renders headless
     glfwReady = true;
     Viewer viewer;
-    try {
-        open(viewer, options, scene);
-        std::fputs(kHelpLine, stderr);
-        runLoop(viewer);
-    } catch (...) {
-        shutDown(viewer);
-        throw;
-    }
-    shutDown(viewer);
+    ScopeExit closeAll([&] { shutDown(viewer); });
+    open(viewer, options, scene);
+    std::fputs(kHelpLine, stderr);
+    runLoop(viewer);
     return true;
 }
