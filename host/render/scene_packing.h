@@ -58,7 +58,7 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision = Preci
 // The material index of vertex v, from its position's w.
 std::uint32_t vertexMaterial(const PackedScene& packed, std::size_t v);
 
-// The box of every sphere, then of every triangle, slightly enlarged (see scene_gpu.cpp);
+// The box of every sphere, then of every triangle, slightly enlarged (see scene_packing.cpp);
 // from the doubles when the scene was packed for fp64, rounded outward to float.
 PrimitiveBounds primitiveBounds(const PackedScene& packed);
 
