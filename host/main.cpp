@@ -1,5 +1,6 @@
 // Raytracer: arguments to a mode (help, headless PNG, benchmark, window), inside
 // one try/catch that turns every failure into a message and an exit status.
+#include "base/scope_guard.h"
 #include "bench.h"
 #include "cli/options.h"
 #include "cli/render_settings.h"
@@ -35,34 +36,31 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
     installInterruptHandlers();
     const bool writing = options.benchFrames == 0;
     if (writing) reservePngOutput(options.outputPath);
+    OnFailure removeOutput([&] {
+        if (writing) releasePngOutput(options.outputPath);
+    });
     Context context;
     Renderer renderer;
     HeadlessTarget target;
-    try {
-        createInstance(context, {}, options.validate);
-        createDevice(context, options.device, VK_NULL_HANDLE,
-                     options.kernel.precision == Precision::Fp64);
-        checkImageFits(imageLimitsOf(context), options.width, options.height, true);
-        createRenderer(renderer, context, scene, renderSettingsFrom(options));
-        createHeadlessTarget(target, context, renderer, options.regionSide);
-        if (options.benchFrames > 0) {
-            std::cout << runBenchmark(context, renderer, target, options, startup) << std::endl;
-        } else {
-            renderHeadlessFrame(target, context, renderer,
-                                options.progress ? ProgressMode::Always : ProgressMode::Auto);
-            throwIfInterrupted();
-            writePng(options.outputPath, readHeadlessImage(target, renderer));
-        }
-    } catch (...) {
+    ScopeExit teardown([&] { // in reverse order of creation, whatever was made
         destroyHeadlessTarget(target, context);
         destroyRenderer(renderer, context);
         destroyContext(context);
-        if (writing) releasePngOutput(options.outputPath);
-        throw;
+    });
+    createInstance(context, {}, options.validate);
+    createDevice(context, options.device, VK_NULL_HANDLE,
+                 options.kernel.precision == Precision::Fp64);
+    checkImageFits(imageLimitsOf(context), options.width, options.height, true);
+    createRenderer(renderer, context, scene, renderSettingsFrom(options));
+    createHeadlessTarget(target, context, renderer, options.regionSide);
+    if (options.benchFrames > 0) {
+        std::cout << runBenchmark(context, renderer, target, options, startup) << std::endl;
+    } else {
+        renderHeadlessFrame(target, context, renderer,
+                            options.progress ? ProgressMode::Always : ProgressMode::Auto);
+        throwIfInterrupted();
+        writePng(options.outputPath, readHeadlessImage(target, renderer));
     }
-    destroyHeadlessTarget(target, context);
-    destroyRenderer(renderer, context);
-    destroyContext(context);
 }
 
 int run(int argc, char** argv, std::chrono::steady_clock::time_point processStart) {

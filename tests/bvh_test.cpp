@@ -375,7 +375,7 @@ TEST(LeafOrder, KeepsEveryPrimitiveAndItsMaterialAndLeavesIndexTheReorderedArray
         scene.triangles.push_back(
             {{vertexAt(a), vertexAt(a + glm::dvec3(1, 0, 0)), vertexAt(a + glm::dvec3(0, 1, 0))}});
     }
-    const PackedScene original = packScene(scene);
+    const PackedScene original = packSceneInFileOrder(scene);
     PackedScene packed = original;
     const PrimitiveBounds bounds = primitiveBounds(packed);
     Bvh bvh = buildBvh(bounds);
@@ -401,7 +401,7 @@ TEST(LeafOrder, SphereBoxesHaveAMarginAndTriangleBoxesAreExact) {
     Scene scene;
     scene.spheres.push_back({glm::dvec3(1, 2, 3), 0.5, {}});
     scene.triangles.push_back({{vertexAt({0, 0, -1}), vertexAt({1, 0, -1}), vertexAt({0, 1, -1})}});
-    PrimitiveBounds bounds = primitiveBounds(packScene(scene));
+    PrimitiveBounds bounds = primitiveBounds(packSceneInFileOrder(scene));
     ASSERT_EQ(bounds.size(), 2u);
     Box3 sphere = inputBox(bounds, 0), triangle = inputBox(bounds, 1);
     EXPECT_TRUE(contains(sphere, {glm::vec3(0.5f, 1.5f, 2.5f), glm::vec3(1.5f, 2.5f, 3.5f)}));

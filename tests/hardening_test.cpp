@@ -5,7 +5,7 @@
 #include "gpu/image_limits.h"
 #include "gpu/vk_check.h"
 #include "render/interrupt.h"
-#include "render/scene_packing.h"
+#include "render/scene_upload.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -123,7 +123,7 @@ TEST(Limits, ASceneBeyondMaxStorageBufferRangeNamesTheLimitAndTheDevice) {
     std::snprintf(context.properties.deviceName, sizeof(context.properties.deviceName), "Test GPU");
     Scene scene;
     scene.spheres.resize(100); // 1600 bytes of spheres
-    expectThrowsWith([&] { uploadScene(context, packScene(scene)); },
+    expectThrowsWith([&] { uploadScene(context, packSceneInFileOrder(scene)); },
                      {"spheres take 1600 bytes", "maxStorageBufferRange of 1024 bytes (Test GPU)"});
 }
 

@@ -85,7 +85,7 @@ TEST(ScenePacking, SharesIdenticalMaterialsAndVertices) {
     scene.triangles.push_back({{b, d, c}});
     scene.lights.push_back({glm::dvec3(0, 5, 0), glm::dvec3(1)});
 
-    PackedScene packed = packScene(scene);
+    PackedScene packed = packSceneInFileOrder(scene);
     EXPECT_EQ(packed.materials.size(), 2u);
     EXPECT_EQ(packed.spheres.size(), 2u);
     EXPECT_EQ(packed.sphereMaterials, (std::vector<std::uint32_t>{0, 0}));
@@ -110,13 +110,13 @@ TEST(ScenePacking, VerticesDifferingOnlyInMaterialStaySeparate) {
     cOther.material.shininess = 20;
     scene.triangles.push_back({{a, b, c}});
     scene.triangles.push_back({{a, b, cOther}});
-    PackedScene packed = packScene(scene);
+    PackedScene packed = packSceneInFileOrder(scene);
     EXPECT_EQ(packed.vertexPositions.size(), 4u);
     EXPECT_EQ(packed.materials.size(), 2u);
 }
 
 TEST(ScenePacking, AnEmptySceneHoldsNothing) {
-    PackedScene packed = packScene(Scene{});
+    PackedScene packed = packSceneInFileOrder(Scene{});
     EXPECT_TRUE(packed.spheres.empty());
     EXPECT_TRUE(packed.triangleVertices.empty());
     EXPECT_TRUE(packed.vertexPositions.empty());
@@ -183,18 +183,18 @@ TEST(KernelVariants, SpecialisedForWhatTheSceneHolds) {
         shiny{glm::dvec3(0.5), glm::dvec3(0, 0, 0.1), 10};
     RenderSettings settings;
     TraceSpecialization plain =
-        traceSpecialization(packScene(sceneWith({matte, matte}, 3)), settings);
+        traceSpecialization(packSceneInFileOrder(sceneWith({matte, matte}, 3)), settings);
     EXPECT_FALSE(plain.hasMirrors);
     EXPECT_FALSE(plain.hasSpecular);
     EXPECT_TRUE(plain.hasSpheres);
     EXPECT_FALSE(plain.hasTriangles);
     TraceSpecialization mirror =
-        traceSpecialization(packScene(sceneWith({matte, shiny}, 1)), settings);
+        traceSpecialization(packSceneInFileOrder(sceneWith({matte, shiny}, 1)), settings);
     EXPECT_TRUE(mirror.hasMirrors);
     EXPECT_TRUE(mirror.hasSpecular);
     settings.depth = 0; // no bounces: highlights, but no reflection loop
     TraceSpecialization flat =
-        traceSpecialization(packScene(sceneWith({matte, shiny}, 1)), settings);
+        traceSpecialization(packSceneInFileOrder(sceneWith({matte, shiny}, 1)), settings);
     EXPECT_FALSE(flat.hasMirrors);
     EXPECT_TRUE(flat.hasSpecular);
 }
@@ -205,7 +205,7 @@ TEST(KernelVariants, GeneralKernelIgnoresTheContentButKeepsChoicesAndHierarchy) 
     settings.generalKernel = true;
     settings.depth = 0;
     settings.kernel.sphereTest = SphereTest::Naive;
-    PackedScene packed = packScene(sceneWith({matte}, 1));
+    PackedScene packed = packSceneInFileOrder(sceneWith({matte}, 1));
     packed.bvhNodes.resize(1); // as if the scene were large enough for the hierarchy
     TraceSpecialization general = traceSpecialization(packed, settings);
     EXPECT_TRUE(general.hasSpheres && general.hasTriangles && general.hasSpecular &&
@@ -217,13 +217,15 @@ TEST(KernelVariants, GeneralKernelIgnoresTheContentButKeepsChoicesAndHierarchy) 
 
 TEST(KernelVariants, MethodChoicesBecomeSpecializationConstants) {
     RenderSettings settings;
-    TraceSpecialization robust = traceSpecialization(packScene(sceneWith({}, 1)), settings);
+    TraceSpecialization robust =
+        traceSpecialization(packSceneInFileOrder(sceneWith({}, 1)), settings);
     EXPECT_EQ(robust.sampler, SAMPLER_R2);
     EXPECT_TRUE(robust.stableSphereTest && robust.watertightTriangles && robust.scaledRayOffset);
     settings.kernel = {
         Sampler::Stratified, 3, Precision::Fp64, SphereTest::Naive, TriangleTest::MollerTrumbore,
         RayOffset::Fixed};
-    TraceSpecialization naive = traceSpecialization(packScene(sceneWith({}, 1)), settings);
+    TraceSpecialization naive =
+        traceSpecialization(packSceneInFileOrder(sceneWith({}, 1)), settings);
     EXPECT_EQ(naive.sampler, SAMPLER_STRATIFIED);
     EXPECT_FALSE(naive.stableSphereTest || naive.watertightTriangles || naive.scaledRayOffset);
 }
@@ -238,12 +240,12 @@ TEST(ScenePacking, Fp64KeepsGeometryInDoubleAndItsBoxesHoldIt) {
     scene.triangles.push_back({{a, b, c}});
     scene.triangles.push_back({{b, a, c}});
 
-    PackedScene single = packScene(scene);
+    PackedScene single = packSceneInFileOrder(scene);
     EXPECT_TRUE(single.spheres64.empty());
     EXPECT_TRUE(single.vertexPositions64.empty());
     EXPECT_EQ(single.vertexPositions.size(), 2u) << "a and b are the same float";
 
-    PackedScene exact = packScene(scene, Precision::Fp64);
+    PackedScene exact = packSceneInFileOrder(scene, Precision::Fp64);
     ASSERT_EQ(exact.spheres64.size(), 1u);
     EXPECT_EQ(exact.spheres64[0], glm::dvec4(1e5 + 1e-9, 0.1, -3, 0.3));
     ASSERT_EQ(exact.vertexPositions64.size(), 3u) << "a and b are different doubles";

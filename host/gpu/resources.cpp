@@ -1,5 +1,6 @@
 #include "gpu/resources.h"
 
+#include "base/scope_guard.h"
 #include "gpu/vk_check.h"
 
 #include <cstring>
@@ -31,6 +32,7 @@ VkDeviceMemory allocate(const Context& context, const VkMemoryRequirements& requ
 Buffer createBuffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage,
                     VkMemoryPropertyFlags properties) {
     Buffer buffer;
+    OnFailure release([&] { destroyBuffer(context, buffer); });
     buffer.size = size;
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     info.size = size;
@@ -50,6 +52,7 @@ Buffer createHostBuffer(const Context& context, VkDeviceSize size, VkBufferUsage
     Buffer buffer =
         createBuffer(context, size, usage,
                      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    OnFailure release([&] { destroyBuffer(context, buffer); });
     VK_CHECK(vkMapMemory(context.device, buffer.memory, 0, VK_WHOLE_SIZE, 0, &buffer.mapped));
     return buffer;
 }
@@ -57,14 +60,15 @@ Buffer createHostBuffer(const Context& context, VkDeviceSize size, VkBufferUsage
 Buffer createDeviceBuffer(const Context& context, const void* data, VkDeviceSize size,
                           VkBufferUsageFlags usage) {
     Buffer staging = createHostBuffer(context, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    ScopeExit releaseStaging([&] { destroyBuffer(context, staging); });
     std::memcpy(staging.mapped, data, size);
     Buffer buffer = createBuffer(context, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                  VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    OnFailure release([&] { destroyBuffer(context, buffer); });
     runOneTimeCommands(context, [&](VkCommandBuffer commands) {
         VkBufferCopy region{0, 0, size};
         vkCmdCopyBuffer(commands, staging.buffer, buffer.buffer, 1, &region);
     });
-    destroyBuffer(context, staging);
     return buffer;
 }
 
@@ -77,6 +81,7 @@ void destroyBuffer(const Context& context, Buffer& buffer) {
 Image createImage(const Context& context, std::uint32_t width, std::uint32_t height,
                   VkFormat format, VkImageUsageFlags usage) {
     Image image;
+    OnFailure release([&] { destroyImage(context, image); });
     image.format = format;
     image.width = width;
     image.height = height;
@@ -121,6 +126,12 @@ void runOneTimeCommands(const Context& context,
     allocateInfo.commandBufferCount = 1;
     VkCommandBuffer commands = VK_NULL_HANDLE;
     VK_CHECK(vkAllocateCommandBuffers(context.device, &allocateInfo, &commands));
+    // The queue is drained first (unchecked) so that a failed wait never frees a buffer
+    // that is still pending; after a successful wait it returns at once.
+    ScopeExit release([&] {
+        vkQueueWaitIdle(context.queue);
+        vkFreeCommandBuffers(context.device, context.commandPool, 1, &commands);
+    });
 
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -133,7 +144,6 @@ void runOneTimeCommands(const Context& context,
     submit.pCommandBuffers = &commands;
     VK_CHECK(vkQueueSubmit(context.queue, 1, &submit, VK_NULL_HANDLE));
     VK_CHECK(vkQueueWaitIdle(context.queue));
-    vkFreeCommandBuffers(context.device, context.commandPool, 1, &commands);
 }
 
 void transitionImage(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,

@@ -1,6 +1,24 @@
 #include "gpu/vk_check.h"
 
+#include <atomic>
 #include <filesystem>
+
+namespace {
+
+std::atomic<std::uint32_t> checksUntilInjectedFailure{0}; // 0: no failure injected
+
+} // namespace
+
+void failNthVulkanCheck(std::uint32_t n) {
+    checksUntilInjectedFailure = n;
+}
+
+bool vulkanCheckFailureInjected() {
+    std::uint32_t left = checksUntilInjectedFailure.load(std::memory_order_relaxed);
+    while (left > 0 && !checksUntilInjectedFailure.compare_exchange_weak(left, left - 1))
+        ;
+    return left == 1;
+}
 
 const char* vkResultName(VkResult result) {
     switch (result) {

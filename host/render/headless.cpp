@@ -1,5 +1,6 @@
 #include "render/headless.h"
 
+#include "base/scope_guard.h"
 #include "gpu/vk_check.h"
 #include "render/interrupt.h"
 
@@ -48,6 +49,7 @@ double submitAndTime(HeadlessTarget& target, const Context& context) {
 
 void createHeadlessTarget(HeadlessTarget& target, const Context& context, const Renderer& renderer,
                           std::uint32_t fixedRegionSide) {
+    OnFailure release([&] { destroyHeadlessTarget(target, context); });
     VkDeviceSize bytes = VkDeviceSize(renderer.outputImage.width) * renderer.outputImage.height * 4;
     target.readbackBuffer = createHostBuffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     // No watchdog guards a CPU device: it gets longer submissions (host/render/region_planner.h).

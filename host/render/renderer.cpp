@@ -1,14 +1,12 @@
 #include "render/renderer.h"
 
-#include "gpu/shader_compiler.h"
+#include "base/scope_guard.h"
 #include "gpu/vk_check.h"
 #include "shared.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <regex>
 #include <stdexcept>
 
 namespace {
@@ -72,28 +70,6 @@ gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t dispatch
     return params;
 }
 
-// Packs the scene in the hierarchy's leaf order, keeping the hierarchy itself only when
-// it pays (settings.acceleration), and says which on stderr. The leaf order is used
-// either way, so both paths see the same primitive order and break ties alike.
-PackedScene packWithHierarchy(const Scene& scene, Acceleration acceleration, Precision precision) {
-    PackedScene packed = packScene(scene, precision);
-    const auto start = std::chrono::steady_clock::now();
-    Bvh bvh = buildBvh(primitiveBounds(packed));
-    const double buildMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    applyLeafOrder(packed, bvh);
-    const std::size_t primitives = packed.spheres.size() + packed.triangleVertices.size() / 3;
-    if (useHierarchy(acceleration, primitives)) {
-        std::fprintf(stderr, "Acceleration: BVH, %zu two-wide nodes, depth %u, built in %.1f ms\n",
-                     bvh.nodes.size(), bvh.depth, buildMs);
-        packed.bvhNodes = std::move(bvh.nodes);
-    } else {
-        std::fprintf(stderr, "Acceleration: none, every primitive tested (%zu primitives)\n",
-                     primitives);
-    }
-    return packed;
-}
-
 } // namespace
 
 TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderSettings& settings) {
@@ -122,38 +98,20 @@ TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderS
 
 void createRenderer(Renderer& renderer, const Context& context, const Scene& scene,
                     const RenderSettings& settings) {
+    OnFailure release([&] { destroyRenderer(renderer, context); });
     renderer.settings = settings;
     const Precision precision = settings.kernel.precision;
     if (precision == Precision::Fp64 && !context.float64Enabled)
         throw std::logic_error("--precision fp64, but the device was created without shaderFloat64 "
                                "(createDevice needFloat64)");
-    PackedScene packed = packWithHierarchy(scene, settings.acceleration, precision);
+    PackedScene packed = packScene(scene, settings.acceleration, precision);
+    std::fprintf(stderr, "%s\n", accelerationSummary(packed.hierarchy).c_str());
     renderer.specialization = traceSpecialization(packed, settings);
-    const TraceSpecialization& specialization = renderer.specialization;
     renderer.scene = uploadScene(context, packed);
     packed = PackedScene{}; // the GPU holds it now
-    if (settings.shaderDirectory.empty()) {
-        renderer.pipeline =
-            loadTracePipeline(context, settings.cacheDirectory, specialization, precision);
-    } else {
-        // The user's sources change under us, so neither SPIR-V nor the driver's cache is kept.
-        std::vector<std::uint32_t> spirv;
-        try {
-            spirv =
-                compileComputeShader("trace.comp", directoryShaderLoader(settings.shaderDirectory),
-                                     precisionPreamble(precision));
-        } catch (const ShaderCompileError& error) {
-            // glslang names files as included ("ERROR: shade.glsl:12: ..."); with the folder
-            // in front, an editor or terminal can jump to the line.
-            const std::regex located("(ERROR|WARNING): ([A-Za-z0-9_.-]+):([0-9]+):");
-            const std::string log =
-                std::regex_replace(error.what(), located,
-                                   "$1: " + (settings.shaderDirectory / "").string() + "$2:$3:");
-            throw ShaderCompileError("the kernel in " + settings.shaderDirectory.string() +
-                                     " does not compile (--shader-dir):\n" + log);
-        }
-        renderer.pipeline = createTracePipeline(context, spirv, VK_NULL_HANDLE, specialization);
-    }
+    renderer.pipeline =
+        loadTracePipeline(context, {settings.shaderDirectory, settings.cacheDirectory},
+                          renderer.specialization, precision);
     const std::size_t primitives = renderer.scene.sphereCount + renderer.scene.triangleCount;
     if (primitives > 0)
         std::fprintf(stderr, "Scene memory: %llu bytes, %.1f bytes per primitive\n",

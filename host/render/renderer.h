@@ -5,7 +5,7 @@
 #include "gpu/context.h"
 #include "gpu/resources.h"
 #include "render/region_planner.h"
-#include "render/scene_packing.h"
+#include "render/scene_upload.h"
 #include "render/trace_pipeline.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
@@ -59,10 +59,10 @@ struct Renderer {
     TraceSpecialization specialization; // what the kernel was compiled for (--bench reports it)
 };
 
-// Compiles the kernel, uploads the scene and creates the output image. The kernel is
-// specialised for the settings and for what the scene holds (traceSpecialization). A
-// shader that does not compile throws ShaderCompileError (host/gpu/shader_compiler.h); the
-// caller destroys the partly created renderer.
+// Packs and uploads the scene, compiles the kernel and creates the output image. The
+// kernel is specialised for the settings and for what the scene holds
+// (traceSpecialization). A shader that does not compile throws ShaderCompileError
+// (host/gpu/shader_compiler.h); any failure releases what was made before it throws.
 void createRenderer(Renderer& renderer, const Context& context, const Scene& scene,
                     const RenderSettings& settings);
 

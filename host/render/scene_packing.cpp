@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -117,7 +119,7 @@ struct PackedVertex {
 
 } // namespace
 
-PackedScene packScene(const Scene& scene, Precision precision) {
+PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
     const bool fp64 = precision == Precision::Fp64;
     PackedScene packed;
     packed.ambient = toVec4(scene.ambient);
@@ -278,81 +280,31 @@ void applyLeafOrder(PackedScene& packed, const Bvh& bvh) {
     packed.triangleVertices = std::move(triangleVertices);
 }
 
-namespace {
-
-struct ArrayView {
-    std::uint32_t binding;
-    const char* name;
-    const void* data;
-    VkDeviceSize bytes;
-};
-
-template <typename T>
-ArrayView view(std::uint32_t binding, const char* name, const std::vector<T>& values) {
-    return {binding, name, values.data(), values.size() * sizeof(T)};
+PackedScene packScene(const Scene& scene, Acceleration acceleration, Precision precision) {
+    PackedScene packed = packSceneInFileOrder(scene, precision);
+    const auto start = std::chrono::steady_clock::now();
+    Bvh bvh = buildBvh(primitiveBounds(packed));
+    HierarchyReport& report = packed.hierarchy;
+    report.buildMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    applyLeafOrder(packed, bvh);
+    report.primitives = packed.spheres.size() + packed.triangleVertices.size() / 3;
+    report.nodes = bvh.nodes.size();
+    report.depth = bvh.depth;
+    report.used = useHierarchy(acceleration, report.primitives);
+    if (report.used) packed.bvhNodes = std::move(bvh.nodes);
+    return packed;
 }
 
-VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
-    return (value + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
-
-GpuScene uploadScene(const Context& context, const PackedScene& packed) {
-    // fp64: the double arrays take the place of the float ones (shaders/precision.glsl).
-    const bool fp64 = !packed.spheres64.empty() || !packed.vertexPositions64.empty();
-    const ArrayView arrays[] = {
-        fp64 ? view(BINDING_SPHERES, "spheres", packed.spheres64)
-             : view(BINDING_SPHERES, "spheres", packed.spheres),
-        view(BINDING_SPHERE_MATERIALS, "sphere materials", packed.sphereMaterials),
-        view(BINDING_TRIANGLES, "triangles", packed.triangleVertices),
-        fp64 ? view(BINDING_VERTEX_POSITIONS, "vertex positions", packed.vertexPositions64)
-             : view(BINDING_VERTEX_POSITIONS, "vertex positions", packed.vertexPositions),
-        view(BINDING_VERTEX_NORMALS, "vertex normals", packed.vertexNormals),
-        view(BINDING_MATERIALS, "materials", packed.materials),
-        view(BINDING_LIGHTS, "lights", packed.lights),
-        view(BINDING_BVH_NODES, "hierarchy nodes", packed.bvhNodes),
-    };
-    // A dvec4 array needs 32-byte alignment.
-    const VkDeviceSize alignment = std::max<VkDeviceSize>(
-        fp64 ? 32 : 16, context.properties.limits.minStorageBufferOffsetAlignment);
-    const VkDeviceSize maxRange = context.properties.limits.maxStorageBufferRange;
-
-    // Lay the arrays out one after another. An empty array still needs a valid
-    // range to bind: all empty ones share one zeroed 16-byte slot at the start.
-    GpuScene scene;
-    VkDeviceSize size = alignment;
-    VkDeviceSize offsets[BINDING_COUNT]{};
-    for (const ArrayView& array : arrays) {
-        if (array.bytes > maxRange)
-            throw std::runtime_error(
-                std::string("the scene's ") + array.name + " take " + std::to_string(array.bytes) +
-                " bytes, more than this device's "
-                "maxStorageBufferRange of " +
-                std::to_string(maxRange) + " bytes (" + context.properties.deviceName + ")");
-        offsets[array.binding] = array.bytes ? size : 0;
-        size = alignUp(size + array.bytes, alignment);
-    }
-    std::vector<std::uint8_t> contents(size, 0);
-    for (const ArrayView& array : arrays) {
-        if (array.bytes)
-            std::memcpy(contents.data() + offsets[array.binding], array.data, array.bytes);
-    }
-    scene.buffer =
-        createDeviceBuffer(context, contents.data(), size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    for (const ArrayView& array : arrays)
-        scene.ranges[array.binding] = {scene.buffer.buffer, offsets[array.binding],
-                                       array.bytes ? array.bytes : 16};
-    scene.bytes = size;
-    scene.sphereCount = static_cast<std::uint32_t>(packed.spheres.size());
-    scene.triangleCount = static_cast<std::uint32_t>(packed.triangleVertices.size() / 3);
-    scene.lightCount = static_cast<std::uint32_t>(packed.lights.size());
-    scene.bvhNodeCount = static_cast<std::uint32_t>(packed.bvhNodes.size());
-    scene.ambient = packed.ambient;
-    return scene;
-}
-
-void destroyGpuScene(const Context& context, GpuScene& scene) {
-    destroyBuffer(context, scene.buffer);
-    scene = GpuScene{};
+std::string accelerationSummary(const HierarchyReport& report) {
+    char line[160];
+    if (report.used)
+        std::snprintf(line, sizeof line,
+                      "Acceleration: BVH, %zu two-wide nodes, depth %u, built in %.1f ms",
+                      report.nodes, report.depth, report.buildMs);
+    else
+        std::snprintf(line, sizeof line,
+                      "Acceleration: none, every primitive tested (%zu primitives)",
+                      report.primitives);
+    return line;
 }

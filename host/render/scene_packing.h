@@ -1,16 +1,31 @@
-// Packs a parsed scene into the GPU layout of shaders/shared.h and uploads it.
+// Packs a parsed scene into the GPU layout of shaders/shared.h (render/scene_upload.h
+// then uploads it).
 // Only what the scene holds is packed: identical materials and identical vertices
 // are stored once, and a sphere pays for no triangle fields.
 #pragma once
 
-#include "gpu/resources.h"
 #include "render/bvh.h"
 #include "render/kernel_choices.h"
 #include "scene/scene_loader.h"
 #include "shared.h"
 
+#include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
+
+// How the hierarchy came out: what the renderer reports on stderr.
+struct HierarchyReport {
+    bool used = false;          // false: the shader tests every primitive
+    std::size_t primitives = 0; // spheres + triangles
+    std::size_t nodes = 0;      // built (used or not)
+    std::uint32_t depth = 0;
+    double buildMs = 0;
+};
+
+// "Acceleration: BVH, N two-wide nodes, depth D, built in T ms" or
+// "Acceleration: none, every primitive tested (N primitives)".
+std::string accelerationSummary(const HierarchyReport& report);
 
 // The scene as the GPU sees it, still on the CPU (easy to test).
 struct PackedScene {
@@ -28,15 +43,22 @@ struct PackedScene {
     // index as a double. Vertices are shared only when their doubles are equal.
     std::vector<glm::dvec4> spheres64;
     std::vector<glm::dvec4> vertexPositions64;
+    HierarchyReport hierarchy; // packScene only
 };
 
-// Spheres and triangles in file order, materials and vertices shared; no hierarchy.
-PackedScene packScene(const Scene& scene, Precision precision = Precision::Fp32);
+// What the GPU needs: the scene packed in the hierarchy's leaf order, with the hierarchy
+// itself only when it pays (acceleration, useHierarchy). The leaf order is used either
+// way, so both paths see the same primitive order and break ties alike.
+PackedScene packScene(const Scene& scene, Acceleration acceleration, Precision precision);
+
+// The first step of packScene: spheres and triangles in file order, materials and
+// vertices shared; no hierarchy.
+PackedScene packSceneInFileOrder(const Scene& scene, Precision precision = Precision::Fp32);
 
 // The material index of vertex v, from its position's w.
 std::uint32_t vertexMaterial(const PackedScene& packed, std::size_t v);
 
-// The box of every sphere, then of every triangle, slightly enlarged (see scene_gpu.cpp);
+// The box of every sphere, then of every triangle, slightly enlarged (see scene_packing.cpp);
 // from the doubles when the scene was packed for fp64, rounded outward to float.
 PrimitiveBounds primitiveBounds(const PackedScene& packed);
 
@@ -49,20 +71,3 @@ PrimitiveBounds primitiveBounds(const PackedScene& packed);
 // slots, not file order; both paths use the slots and the same tie rule, so --accel bvh
 // and --accel none still give identical images.
 void applyLeafOrder(PackedScene& packed, const Bvh& bvh);
-
-// All scene arrays live in one device buffer; each binding sees its own range.
-struct GpuScene {
-    Buffer buffer;
-    VkDescriptorBufferInfo ranges[BINDING_COUNT]{}; // BINDING_OUTPUT_IMAGE's entry unused
-    VkDeviceSize bytes = 0;                         // device memory holding the scene
-    std::uint32_t sphereCount = 0;
-    std::uint32_t triangleCount = 0;
-    std::uint32_t lightCount = 0;
-    std::uint32_t bvhNodeCount = 0; // 0: no hierarchy
-    glm::vec4 ambient{0.0f};
-};
-
-// Throws with the limit's name when an array exceeds maxStorageBufferRange.
-GpuScene uploadScene(const Context& context, const PackedScene& packed);
-
-void destroyGpuScene(const Context& context, GpuScene& scene);

@@ -1,5 +1,6 @@
 #include "render/trace_pipeline.h"
 
+#include "base/scope_guard.h"
 #include "gpu/cache_file.h"
 #include "gpu/pipeline_cache.h"
 #include "gpu/shader_compiler.h"
@@ -11,6 +12,7 @@
 
 #include <cstddef>
 #include <iterator>
+#include <regex>
 #include <string>
 
 // Hashed as bytes for the pipeline cache's key: no padding may hide in it.
@@ -44,12 +46,10 @@ std::uint64_t traceSourceKey(Precision precision) {
     return key;
 }
 
-namespace {
-
-// Fills result step by step; the caller destroys what was made if a step throws.
-void buildTracePipeline(TracePipeline& result, const Context& context,
-                        const std::vector<std::uint32_t>& spirv, VkPipelineCache cache,
-                        const TraceSpecialization& specialization) {
+TracePipeline createTracePipeline(const Context& context, const std::vector<std::uint32_t>& spirv,
+                                  VkPipelineCache cache, TraceSpecialization specialization) {
+    TracePipeline result;
+    OnFailure release([&] { destroyTracePipeline(context, result); });
     // Binding 0 is the output image the kernel writes; every other binding is a
     // read-only range of the scene buffer (see shaders/shared.h for what each holds).
     std::vector<VkDescriptorSetLayoutBinding> bindings;
@@ -76,6 +76,8 @@ void buildTracePipeline(TracePipeline& result, const Context& context,
     moduleInfo.pCode = spirv.data();
     VkShaderModule module = VK_NULL_HANDLE;
     VK_CHECK(vkCreateShaderModule(context.device, &moduleInfo, nullptr, &module));
+    // The module is only needed while the pipeline is created.
+    ScopeExit releaseModule([&] { vkDestroyShaderModule(context.device, module, nullptr); });
 
     VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     pipelineInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
@@ -98,29 +100,34 @@ void buildTracePipeline(TracePipeline& result, const Context& context,
         sizeof(specialization), &specialization};
     pipelineInfo.stage.pSpecializationInfo = &specializationInfo;
     pipelineInfo.layout = result.layout;
-    VkResult created = vkCreateComputePipelines(context.device, cache, 1, &pipelineInfo, nullptr,
-                                                &result.pipeline);
-    // The module is only needed while the pipeline is created.
-    vkDestroyShaderModule(context.device, module, nullptr);
-    VK_CHECK(created);
-}
-
-} // namespace
-
-TracePipeline createTracePipeline(const Context& context, const std::vector<std::uint32_t>& spirv,
-                                  VkPipelineCache cache, TraceSpecialization specialization) {
-    TracePipeline result;
-    try {
-        buildTracePipeline(result, context, spirv, cache, specialization);
-    } catch (...) {
-        destroyTracePipeline(context, result);
-        throw;
-    }
+    VK_CHECK(vkCreateComputePipelines(context.device, cache, 1, &pipelineInfo, nullptr,
+                                      &result.pipeline));
     return result;
 }
 
-TracePipeline loadTracePipeline(const Context& context, const std::filesystem::path& cacheDirectory,
-                                TraceSpecialization specialization, Precision precision) {
+namespace {
+
+// The user's sources change under us, so neither SPIR-V nor the driver's cache is kept.
+TracePipeline loadFromDirectory(const Context& context, const std::filesystem::path& directory,
+                                const TraceSpecialization& specialization, Precision precision) {
+    std::vector<std::uint32_t> spirv;
+    try {
+        spirv = compileComputeShader("trace.comp", directoryShaderLoader(directory),
+                                     precisionPreamble(precision));
+    } catch (const ShaderCompileError& error) {
+        // glslang names files as included ("ERROR: shade.glsl:12: ..."); with the folder
+        // in front, an editor or terminal can jump to the line.
+        const std::regex located("(ERROR|WARNING): ([A-Za-z0-9_.-]+):([0-9]+):");
+        const std::string log = std::regex_replace(error.what(), located,
+                                                   "$1: " + (directory / "").string() + "$2:$3:");
+        throw ShaderCompileError("the kernel in " + directory.string() +
+                                 " does not compile (--shader-dir):\n" + log);
+    }
+    return createTracePipeline(context, spirv, VK_NULL_HANDLE, specialization);
+}
+
+TracePipeline loadEmbedded(const Context& context, const std::filesystem::path& cacheDirectory,
+                           const TraceSpecialization& specialization, Precision precision) {
     const std::uint64_t sourceKey = traceSourceKey(precision);
     std::vector<std::uint32_t> spirv;
     if (std::optional<std::vector<std::uint32_t>> cached =
@@ -136,17 +143,20 @@ TracePipeline loadTracePipeline(const Context& context, const std::filesystem::p
     const std::uint64_t spirvHash = hashBytes(spirv.data(), spirv.size() * sizeof(std::uint32_t));
     PipelineCache cache = openPipelineCache(
         context, cacheDirectory, hashBytes(&specialization, sizeof(specialization), spirvHash));
-    TracePipeline pipeline;
-    try {
-        pipeline = createTracePipeline(context, spirv, cache.cache, specialization);
-        savePipelineCache(context, cache);
-    } catch (...) {
-        destroyTracePipeline(context, pipeline);
-        destroyPipelineCache(context, cache);
-        throw;
-    }
-    destroyPipelineCache(context, cache);
+    ScopeExit releaseCache([&] { destroyPipelineCache(context, cache); });
+    TracePipeline pipeline = createTracePipeline(context, spirv, cache.cache, specialization);
+    OnFailure release([&] { destroyTracePipeline(context, pipeline); });
+    savePipelineCache(context, cache);
     return pipeline;
+}
+
+} // namespace
+
+TracePipeline loadTracePipeline(const Context& context, const KernelSource& source,
+                                TraceSpecialization specialization, Precision precision) {
+    if (!source.shaderDirectory.empty())
+        return loadFromDirectory(context, source.shaderDirectory, specialization, precision);
+    return loadEmbedded(context, source.cacheDirectory, specialization, precision);
 }
 
 void destroyTracePipeline(const Context& context, TracePipeline& pipeline) {

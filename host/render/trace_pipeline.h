@@ -46,12 +46,19 @@ TracePipeline createTracePipeline(const Context& context, const std::vector<std:
                                   VkPipelineCache cache = VK_NULL_HANDLE,
                                   TraceSpecialization specialization = {});
 
-// The trace kernel from the embedded sources, through the on-disk cache in
-// cacheDirectory (host/gpu/pipeline_cache.h): glslang runs only when no SPIR-V is cached
-// for these sources, and the driver is offered its pipeline cache. An empty
-// cacheDirectory compiles everything and writes nothing.
-// The driver's cache is keyed by the SPIR-V and the specialization's bytes.
-TracePipeline loadTracePipeline(const Context& context, const std::filesystem::path& cacheDirectory,
+// Where the kernel's sources come from, and where compiled results are kept.
+struct KernelSource {
+    std::filesystem::path shaderDirectory; // --shader-dir: the user's files; empty: embedded
+    std::filesystem::path cacheDirectory;  // SPIR-V and driver cache; empty: none (--no-cache)
+};
+
+// The trace kernel, compiled and specialised. Embedded sources go through the on-disk
+// cache in cacheDirectory (host/gpu/pipeline_cache.h): glslang runs only when no SPIR-V
+// is cached for them, and the driver is offered its pipeline cache, keyed by the SPIR-V
+// and the specialization's bytes. A shader folder changes under us, so its kernel is
+// never cached, and its compile errors name each file with the folder in front.
+// Throws ShaderCompileError when the kernel does not compile.
+TracePipeline loadTracePipeline(const Context& context, const KernelSource& source,
                                 TraceSpecialization specialization = {},
                                 Precision precision = Precision::Fp32);
 

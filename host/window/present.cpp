@@ -3,6 +3,7 @@
 // Samples per frame adapt to the frame time, and the title reports the progress.
 #include "window/present.h"
 
+#include "base/scope_guard.h"
 #include "gpu/vk_check.h"
 #include "window/capture.h"
 
@@ -73,6 +74,7 @@ void adaptSamplesPerFrame(Viewer& viewer, double milliseconds) {
 } // namespace
 
 void createFrames(Viewer& viewer) {
+    OnFailure release([&] { destroyFrames(viewer); });
     VkDevice device = viewer.context.device;
     VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
     VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};

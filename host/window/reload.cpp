@@ -18,8 +18,7 @@ bool rebuildRenderer(Viewer& viewer, const Scene& scene) {
     Renderer fresh;
     try {
         createRenderer(fresh, viewer.context, scene, viewer.renderer.settings);
-    } catch (const std::exception& error) {
-        destroyRenderer(fresh, viewer.context);
+    } catch (const std::exception& error) { // createRenderer released what it made
         std::fprintf(stderr, "%s\nKeeping the last good kernel and scene.\n", error.what());
         return false;
     }

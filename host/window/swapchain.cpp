@@ -1,5 +1,6 @@
 #include "window/swapchain.h"
 
+#include "base/scope_guard.h"
 #include "gpu/vk_check.h"
 
 #include <algorithm>
@@ -122,6 +123,7 @@ void destroySemaphores(Swapchain& swapchain, const Context& context) {
 
 bool createSwapchain(Swapchain& swapchain, const Context& context, VkSurfaceKHR surface,
                      VkExtent2D framebufferSize, bool vsync) {
+    OnFailure release([&] { destroySwapchain(swapchain, context); });
     return create(swapchain, context, surface, framebufferSize, VK_NULL_HANDLE, vsync);
 }
 
@@ -132,16 +134,12 @@ bool recreateSwapchain(Swapchain& swapchain, const Context& context, VkSurfaceKH
     destroySemaphores(swapchain, context);
     VkSwapchainKHR old = swapchain.swapchain;
     swapchain = Swapchain{};
-    bool created = false;
-    try {
-        created = create(swapchain, context, surface, framebufferSize, old, vsync);
-    } catch (...) {
-        if (old) vkDestroySwapchainKHR(context.device, old, nullptr);
-        throw;
-    }
     // The old swapchain is retired by the create call (or unused when none was made).
-    if (old) vkDestroySwapchainKHR(context.device, old, nullptr);
-    return created;
+    ScopeExit releaseOld([&] {
+        if (old) vkDestroySwapchainKHR(context.device, old, nullptr);
+    });
+    OnFailure release([&] { destroySwapchain(swapchain, context); });
+    return create(swapchain, context, surface, framebufferSize, old, vsync);
 }
 
 void destroySwapchain(Swapchain& swapchain, const Context& context) {

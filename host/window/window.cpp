@@ -10,6 +10,7 @@
 // viewer.h holds the state they share.
 #include "window/window.h"
 
+#include "base/scope_guard.h"
 #include "cli/render_settings.h"
 #include "cli/window_keys.h"
 #include "gpu/vk_check.h"
@@ -159,14 +160,9 @@ bool runWindow(const Options& options, const Scene& scene) {
     if (!glfwInit()) return false; // no display: the caller renders headless
     glfwReady = true;
     Viewer viewer;
-    try {
-        open(viewer, options, scene);
-        std::fputs(windowKeysLine().c_str(), stderr);
-        runLoop(viewer);
-    } catch (...) {
-        shutDown(viewer);
-        throw;
-    }
-    shutDown(viewer);
+    ScopeExit closeAll([&] { shutDown(viewer); });
+    open(viewer, options, scene);
+    std::fputs(windowKeysLine().c_str(), stderr);
+    runLoop(viewer);
     return true;
 }
