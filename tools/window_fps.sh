@@ -24,7 +24,7 @@ width=${size%x*} height=${size#*x}
 icd=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json
 
 if [[ ${WINDOW_FPS_INSIDE_XVFB:-} != 1 ]]; then
-    command -v xvfb-run > /dev/null || { echo "xvfb-run is missing (tools/install_deps.sh)" >&2; exit 1; }
+    command -v xvfb-run > /dev/null || { echo "xvfb-run is missing (tools/build/install_deps.sh)" >&2; exit 1; }
     WINDOW_FPS_INSIDE_XVFB=1 exec xvfb-run -a -s "-screen 0 1920x1080x24" "$0" "$raytracer" "$frames" "$size" \
         "${scenes[@]}"
 fi

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the project needs, only those that are missing.
-#   tools/install_deps.sh           what building, running and testing need
-#   tools/install_deps.sh --bench   that, plus what tools/bench adds (make bench): Embree
+#   tools/build/install_deps.sh           what building, running and testing need
+#   tools/build/install_deps.sh --bench   that, plus what tools/bench adds (make bench): Embree
 #                                   for the embree_peer CPU peer, matplotlib for the chart
 set -euo pipefail
 

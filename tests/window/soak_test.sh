@@ -5,7 +5,7 @@
 # (CPU time used), and Q must still end it with status 0.
 #
 # usage: soak_test.sh RAYTRACER SCENE OUTPUT_DIR [SECONDS]
-# Needs xvfb-run, xauth, xdotool (tools/install_deps.sh).
+# Needs xvfb-run, xauth, xdotool (tools/build/install_deps.sh).
 set -euo pipefail
 
 readonly RSS_BOUND_KB=${RSS_BOUND_KB:-8192} # growth allowed after the warm-up

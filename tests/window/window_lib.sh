@@ -167,7 +167,7 @@ press_key() { # ID KEY
 require_window_tools() {
     local tool
     for tool in xvfb-run xauth xwininfo xwd xdotool python3 timeout; do
-        command -v "$tool" > /dev/null || { echo "window test: $tool is missing (tools/install_deps.sh)"; exit 1; }
+        command -v "$tool" > /dev/null || { echo "window test: $tool is missing (tools/build/install_deps.sh)"; exit 1; }
     done
 }
 

@@ -6,7 +6,7 @@
 #
 # usage: window_test.sh RAYTRACER SCENES_DIR OUTPUT_DIR IMAGE_DIFF
 # Needs xvfb-run, xauth, xwininfo (x11-utils), xwd (x11-apps), xdotool and python3
-# (tools/install_deps.sh). The window is captured with xwd and converted to PNG by a
+# (tools/build/install_deps.sh). The window is captured with xwd and converted to PNG by a
 # small python3 reader below, so ImageMagick is not needed.
 set -euo pipefail
 
