@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
+# Usage: tools/compare_renders.sh OLD_RAYTRACER NEW_RAYTRACER [SCENE_DIR_OR_FILE...] [-- RAYTRACER_ARGS...]
+#
 # Renders every scene with two Raytracer builds and checks that the PNGs are identical,
 # byte for byte: the check for a change that must not move a pixel (a refactoring, a
 # faster kernel that claims the same images).
-#
-#   tools/compare_renders.sh OLD_RAYTRACER NEW_RAYTRACER [SCENE_DIR_OR_FILE...] [-- RAYTRACER_ARGS...]
 #
 # Without scene arguments: scenes/, scenes/stress/ and the classic scenes beside the
 # checkout (../shared/scenes) when present. Arguments after -- go to both builds
@@ -11,7 +11,7 @@
 # Exit status: 0 when every pair is identical, 1 when any differs or fails, 2 on usage.
 set -euo pipefail
 
-usage() { sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; }
 if [[ ${1:-} == -h || ${1:-} == --help ]]; then usage; exit 0; fi
 if (($# < 2)); then usage >&2; exit 2; fi
 old=$1 new=$2

@@ -1,17 +1,17 @@
 #!/usr/bin/env bash
+# Usage: tools/window_fps.sh RAYTRACER [FRAMES] [WIDTHxHEIGHT] [SCENE...]
+#
 # Frames per second of the window's progressive view (one sample per pixel per frame),
 # per scene, under Xvfb on lavapipe: the same device the tests use, so the figures say
 # what a user without a GPU sees; on a real GPU run it on the real display instead.
 #
-# usage: tools/window_fps.sh RAYTRACER [FRAMES] [WIDTHxHEIGHT] [SCENE...]
-#   default: 30 frames at 640x480 over ../shared/scenes/*.scene beside the checkout (the classic scenes).
+# Default: 30 frames at 640x480 over ../shared/scenes/*.scene beside the checkout (the classic scenes).
 # Prints one JSON line per scene (--bench-window) and a table at the end.
 set -euo pipefail
+usage() { awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; }
 
-if (($# < 1)); then
-    echo "usage: $0 RAYTRACER [FRAMES] [WIDTHxHEIGHT] [SCENE...]" >&2
-    exit 2
-fi
+if [[ ${1:-} == -h || ${1:-} == --help ]]; then usage; exit 0; fi
+if (($# < 1)); then usage >&2; exit 2; fi
 raytracer=$(realpath "$1")
 frames=${2:-30}
 size=${3:-640x480}
