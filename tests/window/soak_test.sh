@@ -68,8 +68,7 @@ if (($# < 3)); then
     echo "usage: $0 RAYTRACER SCENE OUTPUT_DIR [SECONDS]" >&2
     exit 2
 fi
-absolute() { echo "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; }
+source "$(dirname "${BASH_SOURCE[0]}")/window_lib.sh"
 mkdir -p "$3"
 seconds=${4:-60}
-timeout $((seconds + 120)) xvfb-run -a -s "-screen 0 1024x768x24" \
-    "$(absolute "$0")" --inside-xvfb "$(absolute "$1")" "$(absolute "$2")" "$(absolute "$3")" "$seconds"
+run_in_xvfb $((seconds + 120)) 1024x768x24 "$(absolute "$0")" --inside-xvfb "$(absolute "$1")" "$(absolute "$2")" "$(absolute "$3")" "$seconds"
