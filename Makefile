@@ -10,7 +10,7 @@ FUZZ_SECONDS ?= 60
 all: build
 
 deps:
-	@tools/install_deps.sh
+	@tools/build/install_deps.sh
 
 configure:
 	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release > /dev/null
@@ -21,7 +21,7 @@ build: configure
 # Set-up, build, then show the default scene (a window if there is a display,
 # otherwise a PNG whose path is printed).
 run: deps build
-	@tools/run_default.sh $(BUILD_DIR)/Raytracer $(SCENE)
+	@tools/build/run_default.sh $(BUILD_DIR)/Raytracer $(SCENE)
 
 # Set-up, build, then the whole test suite on lavapipe with validation on; in CI
 # (CI=true, as .ci/run is run there) also the hardening checks below.
@@ -60,7 +60,7 @@ bench-kernel: build
 	@VK_ICD_FILENAMES=$${VK_ICD_FILENAMES:-} tools/kernel_costs $(BUILD_DIR)/Raytracer $(KERNEL_BENCH_ARGS)
 
 bench-deps:
-	@tools/install_deps.sh --bench
+	@tools/build/install_deps.sh --bench
 
 clean:
 	@rm -rf $(BUILD_DIR)

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
+# Usage: tools/compare_renders.sh OLD_RAYTRACER NEW_RAYTRACER [SCENE_DIR_OR_FILE...] [-- RAYTRACER_ARGS...]
+#        tools/compare_renders.sh --commit REV NEW_RAYTRACER [...]
+#
 # Renders every scene with two Raytracer builds and checks that the PNGs are identical,
 # byte for byte: the check for a change that must not move a pixel (a refactoring, a
 # faster kernel that claims the same images).
-#
-#   tools/compare_renders.sh OLD_RAYTRACER NEW_RAYTRACER [SCENE_DIR_OR_FILE...] [-- RAYTRACER_ARGS...]
-#   tools/compare_renders.sh --commit REV NEW_RAYTRACER [...]
 #
 # --commit REV builds Raytracer of that commit (a detached git worktree, built in
 # build-compare/REV; about a minute on 2 cores) and uses it as OLD: e.g.
@@ -16,7 +16,7 @@
 # Exit status: 0 when every pair is identical, 1 when any differs or fails, 2 on usage.
 set -euo pipefail
 
-usage() { sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; }
 if [[ ${1:-} == -h || ${1:-} == --help ]]; then usage; exit 0; fi
 if (($# < 2)); then usage >&2; exit 2; fi
 root=$(cd "$(dirname "$0")/.." && pwd)

@@ -1,21 +1,23 @@
 #!/usr/bin/env bash
+# Usage: tools/format.sh [--check]
+#
 # Applies the committed .clang-format to every C++ and GLSL file of the project, or with
 # --check lists the files that differ from it and fails (CI runs the check).
-#
 #   tools/format.sh           reformat in place
 #   tools/format.sh --check   exit 1 and name the files when any file is not formatted
 #
 # GLSL is formatted as C-like code; shaders/.clang-format keeps its include order, which
 # matters there. Needs clang-format (Debian's clang-format package, version 14).
 set -euo pipefail
+usage() { awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; }
 cd "$(dirname "$0")/.."
 
 mode=fix
 case "${1:-}" in
     "") ;;
     --check) mode=check ;;
-    -h | --help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    *) echo "usage: $0 [--check]" >&2; exit 2 ;;
+    -h | --help) usage; exit 0 ;;
+    *) usage >&2; exit 2 ;;
 esac
 command -v clang-format > /dev/null || { echo "format.sh: clang-format is not installed" >&2; exit 2; }
 

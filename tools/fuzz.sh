@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
+# Usage: tools/fuzz.sh [SECONDS]    (default 60)
+#
 # Fuzzes the scene parser with libFuzzer for a bounded time; any crash, sanitizer
 # report, leak, hang (-timeout) or out-of-memory (-rss_limit_mb, -malloc_limit_mb)
 # fails with libFuzzer's non-zero status and leaves the input that did it in
 # build-fuzz/artifacts/. Commit such an input to tests/fuzz/regressions/ (the
 # fuzz_replay test replays it in every build).
-#   tools/fuzz.sh [SECONDS]    default 60
 # Seeds: tests/fuzz/seeds/, scenes/, and ../shared/scenes when present (read in
 # place, never copied). New inputs go to build-fuzz/corpus/, kept between runs.
 set -euo pipefail
+usage() { awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; }
+if [[ ${1:-} == -h || ${1:-} == --help ]]; then usage; exit 0; fi
+[[ ${1:-60} =~ ^[0-9]+$ && $# -le 1 ]] || { usage >&2; exit 2; }
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 build=build-fuzz

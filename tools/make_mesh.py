@@ -177,14 +177,26 @@ def ramp(t):
 
 # ------------------------------------------------------------------ main ---
 
+def vector(text):
+    """X,Y,Z as the scene format and Raytracer's options write a vector."""
+    parts = text.split(",")
+    try:
+        values = tuple(float(part) for part in parts)
+    except ValueError:
+        values = ()
+    if len(values) != 3 or not all(math.isfinite(v) for v in values):
+        raise argparse.ArgumentTypeError(f"expected three finite numbers X,Y,Z, got '{text}'")
+    return values
+
+
 def parse_args(argv):
     ap = argparse.ArgumentParser(description="Write a Raytracer scene with one smooth mesh.")
     ap.add_argument("--shape", choices=sorted(SHAPES), default="torus")
     ap.add_argument("--triangles", type=int, default=2000,
                     help="approximate number of mesh triangles (>= 8)")
     ap.add_argument("--out", required=True, help="scene file to write ('-' for stdout)")
-    ap.add_argument("--center", type=float, nargs=3, default=(0.0, 0.0, -4.0),
-                    metavar=("X", "Y", "Z"), help="mesh centre (default 0 0 -4)")
+    ap.add_argument("--center", type=vector, default=(0.0, 0.0, -4.0), metavar="X,Y,Z",
+                    help="mesh centre (default 0,0,-4)")
     ap.add_argument("--scale", type=float, default=1.0, help="uniform scale (default 1)")
     ap.add_argument("--rotate-x", type=float, default=None,
                     help="tilt about x in degrees (default depends on the shape)")

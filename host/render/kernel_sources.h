@@ -1,5 +1,5 @@
 // The trace kernel's sources compiled into the binary (generated from shaders/ at build
-// time by tools/embed_shaders.cmake), and the ways to reach them.
+// time by tools/build/embed_shaders.cmake), and the ways to reach them.
 #pragma once
 
 #include "gpu/shader_compiler.h"

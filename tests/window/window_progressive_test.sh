@@ -129,5 +129,4 @@ fi
 require_window_tools
 mkdir -p "$3"
 rm -f "$3"/*.png "$3"/*.xwd "$3"/*.log "$3"/*.txt
-timeout 280 xvfb-run -a -s "-screen 0 1024x768x24" \
-    "$(absolute "$0")" --inside-xvfb "$(absolute "$1")" "$(absolute "$2")" "$(absolute "$3")" "$(absolute "$4")"
+run_in_xvfb 280 1024x768x24 "$(absolute "$0")" --inside-xvfb "$(absolute "$1")" "$(absolute "$2")" "$(absolute "$3")" "$(absolute "$4")"

@@ -6,7 +6,7 @@
 #
 # usage: window_test.sh RAYTRACER SCENES_DIR OUTPUT_DIR IMAGE_DIFF
 # Needs xvfb-run, xauth, xwininfo (x11-utils), xwd (x11-apps), xdotool and python3
-# (tools/install_deps.sh). The window is captured with xwd and converted to PNG by a
+# (tools/build/install_deps.sh). The window is captured with xwd and converted to PNG by a
 # small python3 reader below, so ImageMagick is not needed.
 set -euo pipefail
 
@@ -168,6 +168,5 @@ require_window_tools
 mkdir -p "$3"
 raytracer=$(absolute "$1") scenes_dir=$(absolute "$2") output_dir=$(absolute "$3") image_diff=$(absolute "$4")
 rm -f "$output_dir"/*.png "$output_dir"/*.xwd "$output_dir"/*.log "$output_dir"/*.txt
-# One X server for the whole test, on a free display number (-a).
-timeout 280 xvfb-run -a -s "-screen 0 1024x768x24" \
-    "$(absolute "$0")" --inside-xvfb "$raytracer" "$scenes_dir" "$output_dir" "$image_diff"
+# One X server for the whole test.
+run_in_xvfb 280 1024x768x24 "$(absolute "$0")" --inside-xvfb "$raytracer" "$scenes_dir" "$output_dir" "$image_diff"

@@ -12,7 +12,7 @@ def import_pyplot(tool):
         matplotlib.use("Agg")  # no display needed
         import matplotlib.pyplot as plt
     except ImportError:
-        print(f"{tool}: matplotlib is missing (tools/install_deps.sh --bench)", file=sys.stderr)
+        print(f"{tool}: matplotlib is missing (tools/build/install_deps.sh --bench)", file=sys.stderr)
         return None
     return plt
 

@@ -167,8 +167,31 @@ press_key() { # ID KEY
 require_window_tools() {
     local tool
     for tool in xvfb-run xauth xwininfo xwd xdotool python3 timeout; do
-        command -v "$tool" > /dev/null || { echo "window test: $tool is missing (tools/install_deps.sh)"; exit 1; }
+        command -v "$tool" > /dev/null || { echo "window test: $tool is missing (tools/build/install_deps.sh)"; exit 1; }
     done
+}
+
+# Runs COMMAND under a new Xvfb server with a screen of WxHxDEPTH, for at most SECONDS,
+# and returns its status. Window tests run in parallel, and xvfb-run -a alone lets two
+# that start at once pick the same display number (it reads lock files that the other's
+# server has not written yet): each try starts its search at a random number, and a try
+# whose server never came up (COMMAND did not start) is made again, up to 5 times.
+run_in_xvfb() { # SECONDS SCREEN COMMAND...
+    local seconds=$1 screen=$2 started status=0 try
+    shift 2
+    started=$(mktemp)
+    for try in 1 2 3 4 5; do
+        rm -f "$started"
+        status=0
+        # -n before -a: -a searches upward from the number given so far.
+        timeout "$seconds" xvfb-run -n $((100 + RANDOM % 800)) -a -s "-screen 0 $screen" \
+            bash -c ': > "$0" && exec "$@"' "$started" "$@" || status=$?
+        [[ -e $started ]] && break
+        echo "Xvfb did not come up (try $try of 5, status $status)" >&2
+        sleep 1
+    done
+    rm -f "$started"
+    return "$status"
 }
 
 # The absolute path of an existing file, for the re-run of a test inside xvfb-run.

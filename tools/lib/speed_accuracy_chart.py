@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Chart of tools/speed_accuracy's results: error against frame time, with the Pareto front.
 
-    python3 tools/speed_accuracy_chart.py results.csv chart.png
+    python3 tools/lib/speed_accuracy_chart.py results.csv chart.png
 
 One column per scene; the top row RMSE (linear [0,1] units), the bottom row mean CIE76
 Delta E, both against frame time (wall_ms_median), log-log. Colour: sampler; marker:

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Chart of tools/bench's results: frame time against triangle count, log-log.
 
-    python3 tools/bench_chart.py results.csv chart.png [--title TEXT]
+    python3 tools/lib/bench_chart.py results.csv chart.png [--title TEXT]
 
 One colour per renderer; the generated meshes as lines, the classic scenes as hollow
 markers. Scenes without triangles have no place on a log axis and are left out.
@@ -27,7 +27,7 @@ def main():
         matplotlib.use("Agg")  # no display needed
         import matplotlib.pyplot as plt
     except ImportError:
-        print("bench_chart: matplotlib is missing (tools/install_deps.sh --bench)", file=sys.stderr)
+        print("bench_chart: matplotlib is missing (tools/build/install_deps.sh --bench)", file=sys.stderr)
         return 3
 
     with open(args.csv, newline="") as f:

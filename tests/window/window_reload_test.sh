@@ -154,5 +154,4 @@ fi
 require_window_tools
 mkdir -p "$2"
 rm -rf "$2"/*.png "$2"/*.xwd "$2"/*.log "$2"/*.txt "$2"/shaders
-timeout 280 xvfb-run -a -s "-screen 0 1024x768x24" \
-    "$(absolute "$0")" --inside-xvfb "$(absolute "$1")" "$(absolute "$2")" "$(absolute "$3")"
+run_in_xvfb 280 1024x768x24 "$(absolute "$0")" --inside-xvfb "$(absolute "$1")" "$(absolute "$2")" "$(absolute "$3")"

@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
+# Usage: tools/build/install_deps.sh [--bench]
+#
 # Installs the Debian packages the project needs, only those that are missing.
-#   tools/install_deps.sh           what building, running and testing need
-#   tools/install_deps.sh --bench   that, plus what tools/bench adds (make bench): Embree
-#                                   for the embree_peer CPU peer, matplotlib for the chart
+#   tools/build/install_deps.sh           what building, running and testing need
+#   tools/build/install_deps.sh --bench   that, plus what tools/bench adds (make bench):
+#                                         Embree for the embree_peer CPU peer, matplotlib
+#                                         for the chart
 set -euo pipefail
+usage() { awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; }
 
 packages=(
     build-essential cmake pkg-config python3
@@ -21,7 +25,8 @@ bench_packages=(libembree-dev python3-matplotlib)
 case "${1:-}" in
     "") ;;
     --bench) packages+=("${bench_packages[@]}") ;;
-    *) echo "usage: $0 [--bench]" >&2; exit 2 ;;
+    -h | --help) usage; exit 0 ;;
+    *) usage >&2; exit 2 ;;
 esac
 
 missing=()

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Chart of tools/stability's results: failure rate against scene scale, per method.
 
-    python3 tools/stability_chart.py results.csv chart.png
+    python3 tools/lib/stability_chart.py results.csv chart.png
 
 One panel per stress family, the family's parameter on a log x axis (distance/radius for
 far_sphere, the scene's scale otherwise), the share of wrong pixels on a symmetric-log y

@@ -5,7 +5,7 @@
 # (CPU time used), and Q must still end it with status 0.
 #
 # usage: soak_test.sh RAYTRACER SCENE OUTPUT_DIR [SECONDS]
-# Needs xvfb-run, xauth, xdotool (tools/install_deps.sh).
+# Needs xvfb-run, xauth, xdotool (tools/build/install_deps.sh).
 set -euo pipefail
 
 readonly RSS_BOUND_KB=${RSS_BOUND_KB:-8192} # growth allowed after the warm-up
@@ -68,8 +68,7 @@ if (($# < 3)); then
     echo "usage: $0 RAYTRACER SCENE OUTPUT_DIR [SECONDS]" >&2
     exit 2
 fi
-absolute() { echo "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; }
+source "$(dirname "${BASH_SOURCE[0]}")/window_lib.sh"
 mkdir -p "$3"
 seconds=${4:-60}
-timeout $((seconds + 120)) xvfb-run -a -s "-screen 0 1024x768x24" \
-    "$(absolute "$0")" --inside-xvfb "$(absolute "$1")" "$(absolute "$2")" "$(absolute "$3")" "$seconds"
+run_in_xvfb $((seconds + 120)) 1024x768x24 "$(absolute "$0")" --inside-xvfb "$(absolute "$1")" "$(absolute "$2")" "$(absolute "$3")" "$seconds"
