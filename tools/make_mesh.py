@@ -201,7 +201,7 @@ def parse_args(argv):
     ap.add_argument("--rotate-x", type=float, default=None,
                     help="tilt about x in degrees (default depends on the shape)")
     ap.add_argument("--rotate-y", type=float, default=None, help="turn about y in degrees")
-    ap.add_argument("--colour", "--color", choices=["ramp", "solid"], default="ramp",
+    ap.add_argument("--color", "--colour", choices=["ramp", "solid"], default="ramp",
                     help="per-vertex hue ramp (default) or one colour")
     ap.add_argument("--specular", type=float, default=0.25,
                     help="mesh spe (grey); also its mirror weight (default 0.25)")
@@ -250,7 +250,7 @@ def main(argv):
         p = rot(pos[k])
         p = (ox + s * p[0], oy + s * p[1], oz + s * p[2])
         ymin = min(ymin, p[1])
-        col = ramp(par[k]) if a.colour == "ramp" else solid
+        col = ramp(par[k]) if a.color == "ramp" else solid
         blocks.append("pos: %s\nnor: %s\ndif: %s\n%s" % (vec(p), vec(rot(nor[k])), vec(col), spe))
 
     extras = []

@@ -147,7 +147,7 @@ def read_mtl(path, warn):
 class Model:
     def __init__(self):
         self.positions = []  # (x, y, z)
-        self.colours = []  # (r, g, b) or None, per position
+        self.colors = []  # (r, g, b) or None, per position
         self.normals = []  # vn, as given
         self.faces = []  # the position indices of each polygon, for smooth normals
         self.triangles = []  # ((position, normal or None) x 3, material, line)
@@ -193,7 +193,7 @@ def read_obj(path, warn):
             values = numbers(path, line, args, 3, "v", optional=4)
             model.positions.append(tuple(values[:3]))
             # x y z [w], or x y z r g b (a common extension) with a colour per vertex.
-            model.colours.append(tuple(clamp(c, 0.0, 1.0) for c in values[3:6]) if len(values) >= 6 else None)
+            model.colors.append(tuple(clamp(c, 0.0, 1.0) for c in values[3:6]) if len(values) >= 6 else None)
         elif keyword == "vn":
             model.normals.append(tuple(numbers(path, line, args, 3, "vn")))
         elif keyword == "f":
@@ -293,13 +293,13 @@ def write_scene(out, model, lights, ambient, fit):
 
     out.write("%d\n" % (len(lights) + len(triangles)))
     out.write("amb: %s\n" % vec(ambient))
-    for position, colour in lights:
-        out.write("light\npos: %s\ncol: %s\n" % (vec(position), vec(colour)))
+    for position, color in lights:
+        out.write("light\npos: %s\ncol: %s\n" % (vec(position), vec(color)))
     for corners, material in triangles:
         out.write("triangle\n")
         for p, n in corners:
             normal = model.normals[n] if n is not None else smooth[p]
-            dif = model.colours[p] if model.colours[p] is not None else material["dif"]
+            dif = model.colors[p] if model.colors[p] is not None else material["dif"]
             out.write("pos: %s\nnor: %s\ndif: %s\nspe: %s\nshi: %s\n" % (
                 vec(place(model.positions[p])), vec(normal), vec(dif), vec(material["spe"]),
                 fmt(material["shi"])))
@@ -322,7 +322,7 @@ def triple(text):
     return values
 
 
-def colour(text):
+def parse_color(text):
     values = triple(text)
     if min(values) < 0.0:
         raise argparse.ArgumentTypeError("a colour cannot be negative, got '%s'" % text)
@@ -335,9 +335,9 @@ def main(argv=None):
     parser.add_argument("-o", "--out", help="the scene file to write (default: standard output)")
     parser.add_argument("--light", type=triple, action="append", metavar="X,Y,Z",
                         help="a point light here (repeatable; default: one at 0,4,0, above the camera)")
-    parser.add_argument("--light-colour", type=colour, default=(1.0, 1.0, 1.0), metavar="R,G,B",
+    parser.add_argument("--light-color", "--light-colour", type=parse_color, default=(1.0, 1.0, 1.0), metavar="R,G,B",
                         help="the colour of every light (default 1,1,1)")
-    parser.add_argument("--ambient", type=colour, default=(0.1, 0.1, 0.1), metavar="R,G,B",
+    parser.add_argument("--ambient", type=parse_color, default=(0.1, 0.1, 0.1), metavar="R,G,B",
                         help="the ambient colour (default 0.1,0.1,0.1)")
     parser.add_argument("--fit", action="store_true",
                         help="move and scale the model to sit centred at z = -3, %g units across" % FIT_SIZE)
@@ -347,13 +347,13 @@ def main(argv=None):
     glued = []
     while argv:
         arg = argv.pop(0)
-        glued.append(arg + "=" + argv.pop(0) if arg in ("--light", "--light-colour", "--ambient") and argv else arg)
+        glued.append(arg + "=" + argv.pop(0) if arg in ("--light", "--light-color", "--light-colour", "--ambient") and argv else arg)
     args = parser.parse_args(glued)
 
     warn = lambda message: print(message, file=sys.stderr)
     try:
         model = read_obj(args.obj, warn)
-        lights = [(p, args.light_colour) for p in (args.light or [(0.0, 4.0, 0.0)])]
+        lights = [(p, args.light_color) for p in (args.light or [(0.0, 4.0, 0.0)])]
         if args.out:
             temporary = args.out + ".tmp"
             with open(temporary, "w", encoding="ascii", newline="\n") as out:

@@ -33,7 +33,7 @@ def main():
     with open(args.csv, newline="") as f:
         rows = [r for r in csv.DictReader(f) if r["status"] == "ok" and int(r["triangles"]) > 0]
     fig, ax = plt.subplots(figsize=(8, 5.5))
-    for renderer, (label, colour, marker) in STYLES.items():
+    for renderer, (label, color, marker) in STYLES.items():
         for kind in ("mesh", "classic"):
             points = sorted((int(r["triangles"]), float(r["wall_ms_median"])) for r in rows
                             if r["renderer"] == renderer and r["kind"] == kind)
@@ -41,9 +41,9 @@ def main():
                 continue
             xs, ys = zip(*points)
             if kind == "mesh":
-                ax.plot(xs, ys, marker=marker, color=colour, label=f"{label}, meshes")
+                ax.plot(xs, ys, marker=marker, color=color, label=f"{label}, meshes")
             else:
-                ax.scatter(xs, ys, marker=marker, facecolors="none", edgecolors=colour,
+                ax.scatter(xs, ys, marker=marker, facecolors="none", edgecolors=color,
                            label=f"{label}, classic scenes")
     # Each classic scene named once, above its slowest renderer.
     highest = {}

@@ -62,7 +62,7 @@ def main():
     for ax, family in zip(axes.flat, families):
         family_rows = [r for r in rows if r["family"] == family]
         varied = varied_methods(family_rows)
-        for label, colour, style, spec in LINES:
+        for label, color, style, spec in LINES:
             needs = {m for m in DEFAULTS if m in spec}
             if not needs <= varied or (spec.get("all_naive") and len(varied) < 2):
                 continue
@@ -71,7 +71,7 @@ def main():
             if not points:
                 continue
             xs, ys = zip(*points)
-            (line,) = ax.plot(xs, ys, style, color=colour, marker="o", markersize=3.5, label=label)
+            (line,) = ax.plot(xs, ys, style, color=color, marker="o", markersize=3.5, label=label)
             handles.setdefault(label, line)
         ax.set_xscale("log")
         ax.set_yscale("symlog", linthresh=0.01)
