@@ -4,6 +4,7 @@
 #include "bench.h"
 #include "cli/options.h"
 #include "cli/render_settings.h"
+#include "gpu/cpu_driver.h"
 #include "gpu/image_limits.h"
 #include "gpu/shader_compiler.h"
 #include "gpu/vk_check.h"
@@ -66,6 +67,7 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
 int run(int argc, char** argv, std::chrono::steady_clock::time_point processStart) {
     StartupTimes startup{processStart, 0.0};
     Options options = parseOptions(argc, argv);
+    requestCpuDriverThreads(options.cpuThreads); // before any Vulkan call reads it
     if (options.showHelp) {
         std::cout << usageText();
         return kSuccess;

@@ -82,6 +82,7 @@ std::string commandLine(const Options& options) {
     // Then how the program runs, which leaves the image as it is.
     addChoice("--accel", accelerationNames(), options.acceleration, defaults.acceleration);
     if (!options.device.empty()) add("--device", shellQuoted(options.device));
+    addCount("--threads", options.cpuThreads, 0);
     addCount("--bench", options.benchFrames, 0);
     addCount("--bench-window", options.benchWindowFrames, 0);
     addCount("--region-size", options.regionSide, 0);

@@ -129,6 +129,8 @@ std::string usageText() {
            "  --camera-up X,Y,Z     up direction (default 0,1,0)\n"
            "  --bench N             render N frames headless after a warm-up, print JSON timings\n"
            "  --device NAME|INDEX   use this Vulkan device (default: a real GPU before a CPU one)\n"
+           "  --threads N           worker threads of a CPU device (lavapipe; default: one per\n"
+           "                        core)\n"
            "  --accel auto|bvh|none  bounding volume hierarchy, or test every primitive (default\n"
            "                        auto: the hierarchy from " +
            std::to_string(kBvhAutoThreshold) +
@@ -204,6 +206,8 @@ Options parseOptions(int argc, const char* const* argv) {
             options.benchFrames = parseCount(arg, value(), 1, 100000);
         } else if (arg == "--device") {
             options.device = value();
+        } else if (arg == "--threads") {
+            options.cpuThreads = parseCount(arg, value(), 1, 256);
         } else if (arg == "--accel") {
             options.acceleration = parseChoice(arg, value(), accelerationNames());
         } else if (arg == "--validate") {

@@ -1,5 +1,6 @@
 #include "gpu/context.h"
 
+#include "gpu/cpu_driver.h"
 #include "gpu/vk_check.h"
 
 #include <algorithm>
@@ -228,6 +229,10 @@ void createDevice(Context& context, const std::string& deviceRequest, VkSurfaceK
     vkGetPhysicalDeviceMemoryProperties(chosen.device, &context.memoryProperties);
     std::fprintf(stderr, "Device: %s (%s)\n", chosen.properties.deviceName,
                  deviceTypeName(chosen.properties.deviceType));
+    if (requestedCpuDriverThreads() > 0 &&
+        chosen.properties.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU)
+        std::fprintf(stderr, "note: --threads %u sets a CPU driver's threads; %s is not one\n",
+                     requestedCpuDriverThreads(), chosen.properties.deviceName);
     VkPhysicalDeviceFeatures enabledFeatures{};
     if (needFloat64) {
         VkPhysicalDeviceFeatures supported{};

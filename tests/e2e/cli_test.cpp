@@ -5,8 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <csignal>
 #include <fstream>
 #include <iterator>
+#include <thread>
 
 namespace {
 
@@ -61,6 +64,7 @@ TEST(CommandLine, BadOptionValuesAreUsageErrors) {
          "--triangle-test expects mt or watertight, got 'MT'"},
         {{"x.scene", "--offset", "1e-4"}, "--offset expects fixed or scaled, got '1e-4'"},
         {{"x.scene", "--sampler"}, "--sampler expects a value"},
+        {{"x.scene", "--threads", "0"}, "--threads expects a whole number from 1 to 256, got '0'"},
     };
     for (const auto& [args, message] : cases) {
         ProcessResult run = runRaytracer(args);
@@ -125,6 +129,45 @@ TEST(CommandLine, DeviceByIndexAndNameIsUsedAndPrinted) {
                           "--width", "32", "--height", "24", "--validate"});
         EXPECT_EQ(run.exitCode, 0) << run.err;
         EXPECT_NE(run.err.find("Device: llvmpipe"), std::string::npos) << run.err;
+    }
+}
+
+// The worker threads lavapipe started in process pid: it names them llvmpipe-0, -1, ...
+int cpuDriverThreads(pid_t pid) {
+    int count = 0;
+    std::error_code error;
+    const std::filesystem::path tasks = "/proc/" + std::to_string(pid) + "/task";
+    for (const auto& task : std::filesystem::directory_iterator(tasks, error)) {
+        std::ifstream comm(task.path() / "comm");
+        std::string name;
+        if (std::getline(comm, name) && name.rfind("llvmpipe-", 0) == 0) ++count;
+    }
+    return count;
+}
+
+TEST(CommandLine, ThreadsSetsTheCpuDriversWorkerCount) {
+    std::filesystem::path dir = freshOutputDir("cli/threads");
+    for (int threads : {1, 3}) {
+        int seen = -1;
+        ProcessResult run = runRaytracerWhile(
+            {std::string(PROJECT_SCENES_DIR) + "/mesh.scene", "-o", (dir / "out.png").string(),
+             "--width", "2048", "--height", "2048", "--spp", "4", "--threads",
+             std::to_string(threads)},
+            [&](pid_t pid, const std::filesystem::path& errPath) {
+                // Once the device is chosen and the first submission runs, the workers exist.
+                const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+                while (std::chrono::steady_clock::now() < deadline) {
+                    std::ifstream err(errPath);
+                    const std::string text{std::istreambuf_iterator<char>(err), {}};
+                    if (text.find("Scene memory:") != std::string::npos) break;
+                    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+                }
+                std::this_thread::sleep_for(std::chrono::milliseconds(500));
+                seen = cpuDriverThreads(pid);
+                kill(pid, SIGTERM);
+            });
+        EXPECT_EQ(seen, threads) << run.err;
+        EXPECT_EQ(run.exitCode, 128 + SIGTERM) << run.err;
     }
 }
 

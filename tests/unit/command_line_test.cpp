@@ -88,6 +88,8 @@ std::vector<std::vector<std::string>> optionSets() {
         {"a.scene", "--accel", "none"},
         {"a.scene", "--device", "llvmpipe (LLVM 15.0.6, 256 bits)"},
         {"a.scene", "--device", "1"},
+        {"a.scene", "--threads", "1"},
+        {"a.scene", "--device", "0", "--threads", "256"},
         {"a.scene", "-o", "b.png", "--bench", "3"},
         {"a.scene", "--bench-window", "100000"},
         {"a.scene", "--region-size", "64"},
