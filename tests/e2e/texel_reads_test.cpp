@@ -1,6 +1,8 @@
 // The kernel reads the scene's hot arrays through texel buffers, or through the storage
 // buffers when an array exceeds maxTexelBufferElements (or fp64, or --storage-reads, hidden,
 // which makes that path reachable on any device): both paths give the same bytes.
+#include "gpu/context.h"
+#include "render/scene_upload.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -75,6 +77,30 @@ TEST(TexelReads, BenchSaysWhichPathRan) {
     std::vector<std::string> fp64 = bench;
     fp64.insert(fp64.end(), {"--precision", "fp64"});
     EXPECT_NE(benchJson(fp64).find("\"texel_reads\": false"), std::string::npos);
+}
+
+// An array beyond maxTexelBufferElements takes the storage path with a note naming it; a
+// lowered limit on lavapipe stands in for a device with a small one.
+TEST(TexelReads, AnArrayBeyondTheTexelLimitFallsBackWithANote) {
+    Context context;
+    createInstance(context, {}, true);
+    createDevice(context, "");
+    Scene scene;
+    scene.spheres.resize(100);
+    const PackedScene packed = packSceneInFileOrder(scene);
+    GpuScene fits = uploadScene(context, packed);
+    EXPECT_TRUE(fits.texelReads);
+    EXPECT_EQ(fits.storageReadsNote, "");
+    destroyGpuScene(context, fits);
+    context.properties.limits.maxTexelBufferElements = 99;
+    GpuScene beyond = uploadScene(context, packed);
+    EXPECT_FALSE(beyond.texelReads);
+    EXPECT_NE(beyond.storageReadsNote.find("spheres take 100 texels, more than this device's "
+                                           "maxTexelBufferElements of 99"),
+              std::string::npos)
+        << beyond.storageReadsNote;
+    destroyGpuScene(context, beyond);
+    destroyContext(context);
 }
 
 TEST(TexelReads, StorageReadsIsNotInTheUsageText) {
