@@ -5,7 +5,8 @@
 // these loops) to a loop over the 8 SIMD lanes with a branch and a bounds check each, and
 // a texel fetch to one gather, whatever the control flow. On a GPU both are one memory
 // instruction per lane; texel buffers are the classic layout for hierarchies there too.
-// fp64 keeps the storage path: its spheres and positions are doubles.
+// In fp64 the spheres and vertex positions are doubles and stay on the storage path; the
+// other arrays are floats and uints in both precisions.
 // Needs: the scene's storage bindings and texelReads (trace.comp).
 
 layout(set = 0, binding = BINDING_SPHERE_TEXELS) uniform samplerBuffer sphereTexels;
@@ -28,13 +29,11 @@ rvec4 fetchSphere(uint i) {
 
 // The three vertex indices of triangle i.
 uvec3 fetchTriangle(uint i) {
-#ifndef RT_FP64
     if (texelReads) {
         int first = int(3u * i);
         return uvec3(texelFetch(triangleTexels, first).x, texelFetch(triangleTexels, first + 1).x,
                      texelFetch(triangleTexels, first + 2).x);
     }
-#endif
     return uvec3(triangleVertices[3u * i], triangleVertices[3u * i + 1u],
                  triangleVertices[3u * i + 2u]);
 }
@@ -49,14 +48,12 @@ rvec3 fetchPosition(uint v) {
 
 // Hierarchy node i: four texels, one per vec4 of GpuBvhNode.
 GpuBvhNode fetchBvhNode(uint i) {
-#ifndef RT_FP64
     if (texelReads) {
         int first = int(4u * i);
         return GpuBvhNode(texelFetch(bvhNodeTexels, first), texelFetch(bvhNodeTexels, first + 1),
                           texelFetch(bvhNodeTexels, first + 2),
                           texelFetch(bvhNodeTexels, first + 3));
     }
-#endif
     return bvhNodes[i];
 }
 
@@ -73,40 +70,32 @@ uint fetchVertexMaterialIndex(uint v) {
 
 // The normal of vertex v as given (three packed floats).
 vec3 fetchNormal(uint v) {
-#ifndef RT_FP64
     if (texelReads) {
         int first = int(3u * v);
         return vec3(texelFetch(normalTexels, first).x, texelFetch(normalTexels, first + 1).x,
                     texelFetch(normalTexels, first + 2).x);
     }
-#endif
     return vec3(vertexNormals[3u * v], vertexNormals[3u * v + 1u], vertexNormals[3u * v + 2u]);
 }
 
 // Material i: two texels.
 GpuMaterial fetchMaterial(uint i) {
-#ifndef RT_FP64
     if (texelReads)
         return GpuMaterial(texelFetch(materialTexels, int(2u * i)),
                            texelFetch(materialTexels, int(2u * i + 1u)));
-#endif
     return materials[i];
 }
 
 // The index into materials[] of sphere i.
 uint fetchSphereMaterialIndex(uint i) {
-#ifndef RT_FP64
     if (texelReads) return texelFetch(sphereMaterialTexels, int(i)).x;
-#endif
     return sphereMaterials[i];
 }
 
 // Light i: two texels.
 GpuLight fetchLight(uint i) {
-#ifndef RT_FP64
     if (texelReads)
         return GpuLight(texelFetch(lightTexels, int(2u * i)),
                         texelFetch(lightTexels, int(2u * i + 1u)));
-#endif
     return lights[i];
 }

@@ -68,8 +68,8 @@ using uint = std::uint32_t;
 #define SPEC_SCALED_RAY_OFFSET 6    // bool: Waechter-Binder, scale-relative; else a fixed 1e-4
 #define SPEC_HAS_MIRRORS 7          // bool: some material has ks > 0 and --depth > 0
 #define SPEC_HAS_SPECULAR 8         // bool: some material has ks > 0 (else no Phong highlight)
-// bool: read the scene through the texel buffers (else through the storage buffers: fp64,
-// an array beyond maxTexelBufferElements, or --storage-reads).
+// bool: read the scene through the texel buffers (else through the storage buffers: an
+// array beyond maxTexelBufferElements, or --storage-reads); fp64's doubles never are.
 #define SPEC_TEXEL_READS 9
 #define SAMPLER_GRID 0u
 #define SAMPLER_STRATIFIED 1u

@@ -32,7 +32,7 @@ layout(constant_id = SPEC_STABLE_SPHERE_TEST) const bool stableSphereTest = true
 layout(constant_id = SPEC_WATERTIGHT_TRIANGLES) const bool watertightTriangles = true;
 layout(constant_id = SPEC_SCALED_RAY_OFFSET) const bool scaledRayOffset = true;
 // Whether the loops read the scene through texel buffers (scene_reads.glsl); the host turns
-// it off for fp64, for an array beyond maxTexelBufferElements and for --storage-reads.
+// it off for an array beyond maxTexelBufferElements and for --storage-reads.
 layout(constant_id = SPEC_TEXEL_READS) const bool texelReads = true;
 
 // Camera, counts, image size, samples and depth for this dispatch (see GpuFrameParams).

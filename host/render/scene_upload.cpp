@@ -30,22 +30,25 @@ struct TexelView {
     const char* name;
     VkFormat format;
     VkDeviceSize texelBytes;
+    bool doublesInFp64; // read from its storage binding in fp64 (shaders/scene_reads.glsl)
 };
 
 // The arrays the kernel reads inside loops (shaders/scene_reads.glsl). R32G32B32A32 and R32
 // formats are ones every Vulkan device supports for uniform texel buffers.
 constexpr TexelView kTexelViews[] = {
-    {BINDING_SPHERE_TEXELS, BINDING_SPHERES, "spheres", VK_FORMAT_R32G32B32A32_SFLOAT, 16},
-    {BINDING_TRIANGLE_TEXELS, BINDING_TRIANGLES, "triangles", VK_FORMAT_R32_UINT, 4},
+    {BINDING_SPHERE_TEXELS, BINDING_SPHERES, "spheres", VK_FORMAT_R32G32B32A32_SFLOAT, 16, true},
+    {BINDING_TRIANGLE_TEXELS, BINDING_TRIANGLES, "triangles", VK_FORMAT_R32_UINT, 4, false},
     {BINDING_POSITION_TEXELS, BINDING_VERTEX_POSITIONS, "vertex positions",
-     VK_FORMAT_R32G32B32A32_SFLOAT, 16},
+     VK_FORMAT_R32G32B32A32_SFLOAT, 16, true},
     {BINDING_BVH_NODE_TEXELS, BINDING_BVH_NODES, "hierarchy nodes", VK_FORMAT_R32G32B32A32_SFLOAT,
-     16},
-    {BINDING_NORMAL_TEXELS, BINDING_VERTEX_NORMALS, "vertex normals", VK_FORMAT_R32_SFLOAT, 4},
-    {BINDING_MATERIAL_TEXELS, BINDING_MATERIALS, "materials", VK_FORMAT_R32G32B32A32_SFLOAT, 16},
+     16, false},
+    {BINDING_NORMAL_TEXELS, BINDING_VERTEX_NORMALS, "vertex normals", VK_FORMAT_R32_SFLOAT, 4,
+     false},
+    {BINDING_MATERIAL_TEXELS, BINDING_MATERIALS, "materials", VK_FORMAT_R32G32B32A32_SFLOAT, 16,
+     false},
     {BINDING_SPHERE_MATERIAL_TEXELS, BINDING_SPHERE_MATERIALS, "sphere materials",
-     VK_FORMAT_R32_UINT, 4},
-    {BINDING_LIGHT_TEXELS, BINDING_LIGHTS, "lights", VK_FORMAT_R32G32B32A32_SFLOAT, 16},
+     VK_FORMAT_R32_UINT, 4, false},
+    {BINDING_LIGHT_TEXELS, BINDING_LIGHTS, "lights", VK_FORMAT_R32G32B32A32_SFLOAT, 16, false},
 };
 static_assert(std::size(kTexelViews) == BINDING_COUNT - BINDING_FIRST_TEXEL_BUFFER);
 
@@ -105,11 +108,12 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
         scene.ranges[array.binding] = {scene.buffer.buffer, offsets[array.binding],
                                        array.bytes ? array.bytes : 16};
 
-    // The doubles of fp64 stay on the storage path.
-    scene.texelReads = wantTexelReads && !fp64;
+    // fp64's doubles stay on the storage path: their views cover the zeroed slot.
+    auto viewed = [&](const TexelView& view) { return !(fp64 && view.doublesInFp64); };
+    scene.texelReads = wantTexelReads;
     for (const TexelView& view : kTexelViews) {
         const VkDeviceSize texels = scene.ranges[view.source].range / view.texelBytes;
-        if (scene.texelReads && texels > limits.maxTexelBufferElements) {
+        if (scene.texelReads && viewed(view) && texels > limits.maxTexelBufferElements) {
             scene.texelReads = false;
             scene.storageReadsNote = std::string("Storage-buffer reads: the scene's ") + view.name +
                                      " take " + std::to_string(texels) +
@@ -122,9 +126,10 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
         VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
         info.buffer = scene.buffer.buffer;
         info.format = view.format;
-        // The zeroed slot at offset 0 when the kernel reads the storage bindings instead.
-        info.offset = scene.texelReads ? scene.ranges[view.source].offset : 0;
-        info.range = scene.texelReads ? scene.ranges[view.source].range : 16;
+        // The zeroed slot at offset 0 when the kernel reads the storage binding instead.
+        const bool used = scene.texelReads && viewed(view);
+        info.offset = used ? scene.ranges[view.source].offset : 0;
+        info.range = used ? scene.ranges[view.source].range : 16;
         VK_CHECK(vkCreateBufferView(context.device, &info, nullptr,
                                     &scene.texelViews[view.binding - BINDING_FIRST_TEXEL_BUFFER]));
     }

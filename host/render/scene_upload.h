@@ -24,8 +24,8 @@ struct GpuScene {
 };
 
 // Throws with the limit's name when an array exceeds maxStorageBufferRange. With
-// wantTexelReads the hot arrays also get texel-buffer views, unless the precision is fp64
-// (doubles: the storage path) or one exceeds maxTexelBufferElements (storageReadsNote).
+// wantTexelReads the arrays also get texel-buffer views (but fp64's doubles), unless one
+// exceeds maxTexelBufferElements (storageReadsNote).
 GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wantTexelReads = true);
 
 void destroyGpuScene(const Context& context, GpuScene& scene);
