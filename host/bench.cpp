@@ -121,6 +121,7 @@ std::string runBenchmark(const Context& context, const Renderer& renderer, Headl
          << ", \"offset\": " << jsonString(choiceName(rayOffsetNames(), settings.kernel.offset))
          << ", \"general_kernel\": " << (settings.generalKernel ? "true" : "false")
          << ", \"compiled_out\": " << compiledOutJson(renderer.specialization)
+         << ", \"texel_reads\": " << (renderer.specialization.texelReads ? "true" : "false")
          << ", \"primary_rays_per_second\": "
          << jsonNumber(pixels * settings.samplesPerPixel / (wallMedian * 1e-3)) << "}";
     return json.str();

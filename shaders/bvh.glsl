@@ -2,7 +2,7 @@
 // and the two scene queries shading uses, which walk it or test every primitive.
 // Needs: Ray (camera.glsl), the primitive tests and brute-force loops (intersect.glsl),
 // the node buffer and the specialization constants useHierarchy, sceneHasSpheres and
-// sceneHasTriangles (trace.comp).
+// sceneHasTriangles (trace.comp); fetchBvhNode and fetchSphere (scene_reads.glsl).
 
 // A ray prepared for the slab test: 1/d per axis (+-inf where d is +-0), and for each of
 // the box's two planes per axis the t to use when the origin lies exactly in that plane.
@@ -82,7 +82,7 @@ bool intersectLeaf(Ray ray, ShearedRay sheared, uint first, uint count, bool any
     real t;
     if (sceneHasSpheres && (!sceneHasTriangles || (count & BVH_LEAF_SPHERES) != 0u)) {
         for (uint i = first; i < end; ++i) {
-            if (!intersectSphere(ray, spheres[i], limit, t)) continue;
+            if (!intersectSphere(ray, fetchSphere(i), limit, t)) continue;
             if (anyHitMode) return true;
             if (t < hit.t || hit.kind == HIT_TRIANGLE ||
                 (hit.kind == HIT_SPHERE && i < hit.index)) {
@@ -152,7 +152,7 @@ bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
                 child = uvec2(stackIndex[stackSize], stackWord[stackSize]);
             }
             if (child.y != 0u) break; // a leaf
-            GpuBvhNode node = bvhNodes[child.x];
+            GpuBvhNode node = fetchBvhNode(child.x);
             real leftEntry, rightEntry;
             bool hitLeft = hitBox(slabRay, rvec3(node.leftMinAndIndex.xyz),
                                   rvec3(node.leftMaxAndCount.xyz), hit.t, leftEntry);

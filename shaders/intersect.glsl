@@ -1,8 +1,8 @@
 // Ray/primitive intersection, and the loops that test every primitive (closest hit, any
 // hit): the path for scenes too small for a hierarchy to pay (see bvh.glsl).
 // Both primitive kinds are two-sided; a hit needs tMin < t < tMax with tMin = 0.
-// Needs: Ray (camera.glsl), the scene buffers, params and the specialization constants
-// stableSphereTest and watertightTriangles (trace.comp).
+// Needs: Ray (camera.glsl), the scene reads (scene_reads.glsl), params and the
+// specialization constants stableSphereTest and watertightTriangles (trace.comp).
 
 const float FLOAT_MAX = 3.402823466e+38;
 
@@ -148,11 +148,12 @@ bool intersectTriangleMollerTrumbore(Ray ray, rvec3 a, rvec3 b, rvec3 c, real tM
     return true;
 }
 
-// The three corners of triangle i, from the index and position buffers.
+// The three corners of triangle i, from the index and position arrays.
 void triangleCorners(uint i, out rvec3 a, out rvec3 b, out rvec3 c) {
-    a = vertexPositions[triangleVertices[3u * i]].xyz;
-    b = vertexPositions[triangleVertices[3u * i + 1u]].xyz;
-    c = vertexPositions[triangleVertices[3u * i + 2u]].xyz;
+    uvec3 v = fetchTriangle(i);
+    a = fetchPosition(v.x);
+    b = fetchPosition(v.y);
+    c = fetchPosition(v.z);
 }
 
 // Triangle i against the ray with the test chosen by --triangle-test (a specialization
@@ -172,7 +173,7 @@ Hit closestHitEveryPrimitive(Ray ray) {
     Hit hit = Hit(FLOAT_MAX, HIT_NONE, 0u, rvec3(0.0));
     real t;
     for (uint i = 0u; sceneHasSpheres && i < params.counts.x; ++i) {
-        if (intersectSphere(ray, spheres[i], hit.t, t)) hit = Hit(t, HIT_SPHERE, i, rvec3(0.0));
+        if (intersectSphere(ray, fetchSphere(i), hit.t, t)) hit = Hit(t, HIT_SPHERE, i, rvec3(0.0));
     }
     ShearedRay sheared = shearRay(ray);
     rvec3 barycentric;
@@ -188,7 +189,7 @@ Hit closestHitEveryPrimitive(Ray ray) {
 bool anyHitEveryPrimitive(Ray ray, real tMax) {
     real t;
     for (uint i = 0u; sceneHasSpheres && i < params.counts.x; ++i) {
-        if (intersectSphere(ray, spheres[i], tMax, t)) return true;
+        if (intersectSphere(ray, fetchSphere(i), tMax, t)) return true;
     }
     ShearedRay sheared = shearRay(ray);
     rvec3 barycentric;

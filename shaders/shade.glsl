@@ -1,6 +1,6 @@
 // Surface data at a hit and Phong shading with hard shadows, as docs/model.md defines them.
 // Needs: Ray, Hit (camera.glsl, intersect.glsl), anyHit (bvh.glsl), offsetRayOrigin
-// (ray_offset.glsl).
+// (ray_offset.glsl), the scene reads (scene_reads.glsl).
 
 // Everything shading needs about a hit point.
 struct SurfacePoint {
@@ -20,22 +20,10 @@ rvec3 normalizeOr(rvec3 v, rvec3 fallback) {
     return m > 0.0 ? normalize(v / m) : fallback;
 }
 
-// The normal of vertex v as given (three packed floats).
-vec3 vertexNormal(uint v) {
-    return vec3(vertexNormals[3u * v], vertexNormals[3u * v + 1u], vertexNormals[3u * v + 2u]);
-}
-
-// The material of vertex v: its index rides in the position's w, as the float's bits (fp32)
-// or as a double's exact integer value (fp64).
-#ifdef RT_FP64
+// The material of vertex v (its index rides in the position's w).
 GpuMaterial vertexMaterial(uint v) {
-    return materials[uint(vertexPositions[v].w)];
+    return fetchMaterial(fetchVertexMaterialIndex(v));
 }
-#else
-GpuMaterial vertexMaterial(uint v) {
-    return materials[floatBitsToUint(vertexPositions[v].w)];
-}
-#endif
 
 // Position, normals and material at a hit. Sphere: N = (P - C) / r, with P projected back
 // onto the sphere; triangle: P, the vertex normals and the materials interpolated with
@@ -44,27 +32,25 @@ GpuMaterial vertexMaterial(uint v) {
 SurfacePoint surfaceAt(Ray ray, Hit hit) {
     SurfacePoint s;
     if (sceneHasSpheres && (!sceneHasTriangles || hit.kind == HIT_SPHERE)) {
-        rvec4 sphere = spheres[hit.index];
+        rvec4 sphere = fetchSphere(hit.index);
         rvec3 radial = normalizeOr(ray.origin + hit.t * ray.direction - sphere.xyz, -ray.direction);
         s.position = sphere.xyz + sphere.w * radial;
         s.magnitude = abs(sphere.xyz) + sphere.w * abs(radial);
         s.geometricNormal = radial;
         s.normal = radial;
-        GpuMaterial m = materials[sphereMaterials[hit.index]];
+        GpuMaterial m = fetchMaterial(fetchSphereMaterialIndex(hit.index));
         s.kd = m.diffuseShininess.xyz;
         s.ks = m.specular.xyz;
         s.shininess = m.diffuseShininess.w;
     } else {
-        uvec3 v = uvec3(triangleVertices[3u * hit.index], triangleVertices[3u * hit.index + 1u],
-                        triangleVertices[3u * hit.index + 2u]);
+        uvec3 v = fetchTriangle(hit.index);
         rvec3 w = hit.barycentric;
-        rvec3 a = vertexPositions[v.x].xyz, b = vertexPositions[v.y].xyz,
-              c = vertexPositions[v.z].xyz;
+        rvec3 a = fetchPosition(v.x), b = fetchPosition(v.y), c = fetchPosition(v.z);
         // From the barycentrics rather than o + t d: its error scales with the vertices only.
         s.position = w.x * a + w.y * b + w.z * c;
         s.magnitude = w.x * abs(a) + w.y * abs(b) + w.z * abs(c);
         s.geometricNormal = normalizeOr(cross(b - a, c - a), -ray.direction);
-        rvec3 n = w.x * vertexNormal(v.x) + w.y * vertexNormal(v.y) + w.z * vertexNormal(v.z);
+        rvec3 n = w.x * fetchNormal(v.x) + w.y * fetchNormal(v.y) + w.z * fetchNormal(v.z);
         s.normal = normalizeOr(n, s.geometricNormal);
         GpuMaterial ma = vertexMaterial(v.x);
         GpuMaterial mb = vertexMaterial(v.y);
@@ -104,7 +90,7 @@ bool inShadow(SurfacePoint s, rvec3 lightPosition, rvec3 l) {
 vec3 shadePhong(SurfacePoint s, rvec3 view) {
     vec3 color = params.ambient.rgb;
     for (uint i = 0u; i < params.counts.z; ++i) {
-        GpuLight light = lights[i];
+        GpuLight light = fetchLight(i);
         rvec3 lightPosition = light.position.xyz;
         // A light exactly at the point has no direction: l = 0 skips it below.
         rvec3 l = normalizeOr(lightPosition - s.position, rvec3(0.0));

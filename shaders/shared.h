@@ -41,7 +41,20 @@ using uint = std::uint32_t;
 #define BINDING_LIGHTS 7         // GpuLight per light
 #define BINDING_BVH_NODES 8      // GpuBvhNode per hierarchy node, depth first (host/render/bvh.h)
 #define BINDING_ACCUMULATION 9   // vec4 per pixel, row major: the window's running sum of samples
-#define BINDING_COUNT 10
+// The arrays read inside loops (traversal, primitives, bounces, lights), again, as uniform
+// texel buffers: views of the same ranges (SPEC_TEXEL_READS picks them over the above).
+// On lavapipe a texel fetch is a gather, where a storage-buffer load inside control flow
+// is a loop over the lanes (docs/performance.md).
+#define BINDING_FIRST_TEXEL_BUFFER 10
+#define BINDING_SPHERE_TEXELS 10   // RGBA32F view of BINDING_SPHERES
+#define BINDING_TRIANGLE_TEXELS 11 // R32UI view of BINDING_TRIANGLES
+#define BINDING_POSITION_TEXELS 12 // RGBA32F view of BINDING_VERTEX_POSITIONS
+#define BINDING_BVH_NODE_TEXELS 13 // RGBA32F view of BINDING_BVH_NODES, 4 texels per node
+#define BINDING_NORMAL_TEXELS 14   // R32F view of BINDING_VERTEX_NORMALS
+#define BINDING_MATERIAL_TEXELS 15 // RGBA32F view of BINDING_MATERIALS, 2 texels per material
+#define BINDING_SPHERE_MATERIAL_TEXELS 16 // R32UI view of BINDING_SPHERE_MATERIALS
+#define BINDING_LIGHT_TEXELS 17           // RGBA32F view of BINDING_LIGHTS, 2 texels per light
+#define BINDING_COUNT 18
 
 // Specialization constant ids (host/render/trace_pipeline.h, TraceSpecialization): bool unless
 // marked uint.
@@ -55,6 +68,9 @@ using uint = std::uint32_t;
 #define SPEC_SCALED_RAY_OFFSET 6    // bool: Waechter-Binder, scale-relative; else a fixed 1e-4
 #define SPEC_HAS_MIRRORS 7          // bool: some material has ks > 0 and --depth > 0
 #define SPEC_HAS_SPECULAR 8         // bool: some material has ks > 0 (else no Phong highlight)
+// bool: read the scene through the texel buffers (else through the storage buffers: an
+// array beyond maxTexelBufferElements, or --storage-reads); fp64's doubles never are.
+#define SPEC_TEXEL_READS 9
 #define SAMPLER_GRID 0u
 #define SAMPLER_STRATIFIED 1u
 #define SAMPLER_R2 2u

@@ -31,6 +31,9 @@ layout(constant_id = SPEC_SAMPLER) const uint samplerKind = SAMPLER_R2;
 layout(constant_id = SPEC_STABLE_SPHERE_TEST) const bool stableSphereTest = true;
 layout(constant_id = SPEC_WATERTIGHT_TRIANGLES) const bool watertightTriangles = true;
 layout(constant_id = SPEC_SCALED_RAY_OFFSET) const bool scaledRayOffset = true;
+// Whether the loops read the scene through texel buffers (scene_reads.glsl); the host turns
+// it off for an array beyond maxTexelBufferElements and for --storage-reads.
+layout(constant_id = SPEC_TEXEL_READS) const bool texelReads = true;
 
 // Camera, counts, image size, samples and depth for this dispatch (see GpuFrameParams).
 layout(push_constant) uniform FrameParamsBlock {
@@ -82,6 +85,7 @@ layout(set = 0, binding = BINDING_ACCUMULATION, std430) buffer AccumulationBuffe
     vec4 accumulation[];
 };
 
+#include "scene_reads.glsl"
 #include "camera.glsl"
 #include "sampling.glsl"
 #include "ray_offset.glsl"

@@ -93,6 +93,7 @@ std::string commandLine(const Options& options) {
     addSwitch("--window", options.forceWindow);
     addSwitch("--redraw-continuously", options.redrawContinuously);
     addSwitch("--general-kernel", options.generalKernel);
+    addSwitch("--storage-reads", options.storageReads);
     addSwitch("--help", options.showHelp);
     return command;
 }

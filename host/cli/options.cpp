@@ -224,6 +224,8 @@ Options parseOptions(int argc, const char* const* argv) {
             options.redrawContinuously = true;
         } else if (arg == "--general-kernel") {
             options.generalKernel = true;
+        } else if (arg == "--storage-reads") {
+            options.storageReads = true;
         } else if (parseKernelOption(arg, value, options.kernel)) {
         } else if (arg.size() > 1 && arg[0] == '-') {
             throw UsageError("unknown option '" + arg + "' (see --help)");

@@ -44,6 +44,7 @@ struct Options {
     KernelChoices
         kernel; // --sampler, --seed, --precision, --sphere-test, --triangle-test, --offset
     bool generalKernel = false; // --general-kernel (hidden, for tools/kernel_costs)
+    bool storageReads = false;  // --storage-reads (hidden): the kernel's fallback read path
 
     bool operator==(const Options&) const = default; // commandLine's round trip is tested by it
 };

@@ -17,5 +17,6 @@ RenderSettings renderSettingsFrom(const Options& options) {
     settings.camera = options.camera;
     settings.shaderDirectory = options.shaderDirectory;
     settings.generalKernel = options.generalKernel;
+    settings.storageReads = options.storageReads;
     return settings;
 }

@@ -16,13 +16,15 @@ namespace {
 constexpr std::uint32_t kMaxDispatchSide = 1024;
 
 void createDescriptors(Renderer& renderer, const Context& context) {
+    constexpr std::uint32_t texelBuffers = BINDING_COUNT - BINDING_FIRST_TEXEL_BUFFER;
     VkDescriptorPoolSize sizes[] = {
         {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
-        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, BINDING_COUNT - 1},
+        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, BINDING_COUNT - 1 - texelBuffers},
+        {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, texelBuffers},
     };
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = 2;
+    poolInfo.poolSizeCount = 3;
     poolInfo.pPoolSizes = sizes;
     VK_CHECK(vkCreateDescriptorPool(context.device, &poolInfo, nullptr, &renderer.descriptorPool));
 
@@ -41,8 +43,12 @@ void createDescriptors(Renderer& renderer, const Context& context) {
         write.dstSet = renderer.descriptorSet;
         write.dstBinding = binding;
         write.descriptorCount = 1;
-        write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        write.pBufferInfo = &renderer.scene.ranges[binding];
+        write.descriptorType = bindingDescriptorType(binding);
+        if (binding >= BINDING_FIRST_TEXEL_BUFFER)
+            write.pTexelBufferView =
+                &renderer.scene.texelViews[binding - BINDING_FIRST_TEXEL_BUFFER];
+        else
+            write.pBufferInfo = &renderer.scene.ranges[binding];
         writes.push_back(write);
     }
     vkUpdateDescriptorSets(context.device, static_cast<std::uint32_t>(writes.size()), writes.data(),
@@ -107,8 +113,11 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
     PackedScene packed = packScene(scene, settings.acceleration, precision);
     std::fprintf(stderr, "%s\n", accelerationSummary(packed.hierarchy).c_str());
     renderer.specialization = traceSpecialization(packed, settings);
-    renderer.scene = uploadScene(context, packed);
+    renderer.scene = uploadScene(context, packed, !settings.storageReads);
     packed = PackedScene{}; // the GPU holds it now
+    renderer.specialization.texelReads = renderer.scene.texelReads;
+    if (!renderer.scene.storageReadsNote.empty())
+        std::fprintf(stderr, "%s\n", renderer.scene.storageReadsNote.c_str());
     renderer.pipeline =
         loadTracePipeline(context, {settings.shaderDirectory, settings.cacheDirectory},
                           renderer.specialization, precision);

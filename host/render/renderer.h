@@ -33,6 +33,9 @@ struct RenderSettings {
     // triangles, highlights, mirrors), keeping the method choices and the hierarchy, so that
     // tools/kernel_costs can measure what specialising for the scene's content gains. Same image.
     bool generalKernel = false;
+    // --storage-reads (hidden): read the scene through the storage buffers, as for an array
+    // beyond the device's maxTexelBufferElements, so that the tests reach that path. Same image.
+    bool storageReads = false;
 };
 
 // The samples one dispatch adds (GpuFrameParams.dispatch.zw): count 0 traces all of

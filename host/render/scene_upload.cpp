@@ -1,7 +1,11 @@
 #include "render/scene_upload.h"
 
+#include "base/scope_guard.h"
+#include "gpu/vk_check.h"
+
 #include <algorithm>
 #include <cstring>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -19,13 +23,42 @@ ArrayView view(std::uint32_t binding, const char* name, const std::vector<T>& va
     return {binding, name, values.data(), values.size() * sizeof(T)};
 }
 
+// A texel-buffer view of one storage binding's range: its format and texel size.
+struct TexelView {
+    std::uint32_t binding;
+    std::uint32_t source;
+    const char* name;
+    VkFormat format;
+    VkDeviceSize texelBytes;
+    bool doublesInFp64; // read from its storage binding in fp64 (shaders/scene_reads.glsl)
+};
+
+// The arrays the kernel reads inside loops (shaders/scene_reads.glsl). R32G32B32A32 and R32
+// formats are ones every Vulkan device supports for uniform texel buffers.
+constexpr TexelView kTexelViews[] = {
+    {BINDING_SPHERE_TEXELS, BINDING_SPHERES, "spheres", VK_FORMAT_R32G32B32A32_SFLOAT, 16, true},
+    {BINDING_TRIANGLE_TEXELS, BINDING_TRIANGLES, "triangles", VK_FORMAT_R32_UINT, 4, false},
+    {BINDING_POSITION_TEXELS, BINDING_VERTEX_POSITIONS, "vertex positions",
+     VK_FORMAT_R32G32B32A32_SFLOAT, 16, true},
+    {BINDING_BVH_NODE_TEXELS, BINDING_BVH_NODES, "hierarchy nodes", VK_FORMAT_R32G32B32A32_SFLOAT,
+     16, false},
+    {BINDING_NORMAL_TEXELS, BINDING_VERTEX_NORMALS, "vertex normals", VK_FORMAT_R32_SFLOAT, 4,
+     false},
+    {BINDING_MATERIAL_TEXELS, BINDING_MATERIALS, "materials", VK_FORMAT_R32G32B32A32_SFLOAT, 16,
+     false},
+    {BINDING_SPHERE_MATERIAL_TEXELS, BINDING_SPHERE_MATERIALS, "sphere materials",
+     VK_FORMAT_R32_UINT, 4, false},
+    {BINDING_LIGHT_TEXELS, BINDING_LIGHTS, "lights", VK_FORMAT_R32G32B32A32_SFLOAT, 16, false},
+};
+static_assert(std::size(kTexelViews) == BINDING_COUNT - BINDING_FIRST_TEXEL_BUFFER);
+
 VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
     return (value + alignment - 1) / alignment * alignment;
 }
 
 } // namespace
 
-GpuScene uploadScene(const Context& context, const PackedScene& packed) {
+GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wantTexelReads) {
     // fp64: the double arrays take the place of the float ones (shaders/precision.glsl).
     const bool fp64 = !packed.spheres64.empty() || !packed.vertexPositions64.empty();
     const ArrayView arrays[] = {
@@ -40,14 +73,17 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed) {
         view(BINDING_LIGHTS, "lights", packed.lights),
         view(BINDING_BVH_NODES, "hierarchy nodes", packed.bvhNodes),
     };
-    // A dvec4 array needs 32-byte alignment.
-    const VkDeviceSize alignment = std::max<VkDeviceSize>(
-        fp64 ? 32 : 16, context.properties.limits.minStorageBufferOffsetAlignment);
+    // A dvec4 array needs 32-byte alignment; each range may also be a texel buffer's.
+    const VkPhysicalDeviceLimits& limits = context.properties.limits;
+    const VkDeviceSize alignment =
+        std::max({VkDeviceSize(fp64 ? 32 : 16), limits.minStorageBufferOffsetAlignment,
+                  limits.minTexelBufferOffsetAlignment});
     const VkDeviceSize maxRange = context.properties.limits.maxStorageBufferRange;
 
     // Lay the arrays out one after another. An empty array still needs a valid
     // range to bind: all empty ones share one zeroed 16-byte slot at the start.
     GpuScene scene;
+    OnFailure release([&] { destroyGpuScene(context, scene); });
     VkDeviceSize size = alignment;
     VkDeviceSize offsets[BINDING_COUNT]{};
     for (const ArrayView& array : arrays) {
@@ -65,11 +101,38 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed) {
         if (array.bytes)
             std::memcpy(contents.data() + offsets[array.binding], array.data, array.bytes);
     }
-    scene.buffer =
-        createDeviceBuffer(context, contents.data(), size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    scene.buffer = createDeviceBuffer(context, contents.data(), size,
+                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                          VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
     for (const ArrayView& array : arrays)
         scene.ranges[array.binding] = {scene.buffer.buffer, offsets[array.binding],
                                        array.bytes ? array.bytes : 16};
+
+    // fp64's doubles stay on the storage path: their views cover the zeroed slot.
+    auto viewed = [&](const TexelView& view) { return !(fp64 && view.doublesInFp64); };
+    scene.texelReads = wantTexelReads;
+    for (const TexelView& view : kTexelViews) {
+        const VkDeviceSize texels = scene.ranges[view.source].range / view.texelBytes;
+        if (scene.texelReads && viewed(view) && texels > limits.maxTexelBufferElements) {
+            scene.texelReads = false;
+            scene.storageReadsNote = std::string("Storage-buffer reads: the scene's ") + view.name +
+                                     " take " + std::to_string(texels) +
+                                     " texels, more than this device's maxTexelBufferElements "
+                                     "of " +
+                                     std::to_string(limits.maxTexelBufferElements);
+        }
+    }
+    for (const TexelView& view : kTexelViews) {
+        VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+        info.buffer = scene.buffer.buffer;
+        info.format = view.format;
+        // The zeroed slot at offset 0 when the kernel reads the storage binding instead.
+        const bool used = scene.texelReads && viewed(view);
+        info.offset = used ? scene.ranges[view.source].offset : 0;
+        info.range = used ? scene.ranges[view.source].range : 16;
+        VK_CHECK(vkCreateBufferView(context.device, &info, nullptr,
+                                    &scene.texelViews[view.binding - BINDING_FIRST_TEXEL_BUFFER]));
+    }
     scene.bytes = size;
     scene.sphereCount = static_cast<std::uint32_t>(packed.spheres.size());
     scene.triangleCount = static_cast<std::uint32_t>(packed.triangleVertices.size() / 3);
@@ -80,6 +143,8 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed) {
 }
 
 void destroyGpuScene(const Context& context, GpuScene& scene) {
+    for (VkBufferView view : scene.texelViews)
+        if (view) vkDestroyBufferView(context.device, view, nullptr);
     destroyBuffer(context, scene.buffer);
     scene = GpuScene{};
 }

@@ -4,6 +4,8 @@
 #include "gpu/resources.h"
 #include "render/scene_packing.h"
 
+#include <string>
+
 // All scene arrays live in one device buffer; each binding sees its own range.
 struct GpuScene {
     Buffer buffer;
@@ -14,9 +16,16 @@ struct GpuScene {
     std::uint32_t lightCount = 0;
     std::uint32_t bvhNodeCount = 0; // 0: no hierarchy
     glm::vec4 ambient{0.0f};
+    // Uniform texel buffer views for BINDING_FIRST_TEXEL_BUFFER on, always valid: over the
+    // hot arrays when texelReads, else over the zeroed slot (the kernel then never reads them).
+    VkBufferView texelViews[BINDING_COUNT - BINDING_FIRST_TEXEL_BUFFER]{};
+    bool texelReads = false;      // the kernel reads the hot arrays through texelViews
+    std::string storageReadsNote; // why not, when an array exceeds maxTexelBufferElements
 };
 
-// Throws with the limit's name when an array exceeds maxStorageBufferRange.
-GpuScene uploadScene(const Context& context, const PackedScene& packed);
+// Throws with the limit's name when an array exceeds maxStorageBufferRange. With
+// wantTexelReads the arrays also get texel-buffer views (but fp64's doubles), unless one
+// exceeds maxTexelBufferElements (storageReadsNote).
+GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wantTexelReads = true);
 
 void destroyGpuScene(const Context& context, GpuScene& scene);

@@ -16,7 +16,13 @@
 #include <string>
 
 // Hashed as bytes for the pipeline cache's key: no padding may hide in it.
-static_assert(sizeof(TraceSpecialization) == 9 * sizeof(std::uint32_t));
+static_assert(sizeof(TraceSpecialization) == 10 * sizeof(std::uint32_t));
+
+VkDescriptorType bindingDescriptorType(std::uint32_t binding) {
+    if (binding == BINDING_OUTPUT_IMAGE) return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    if (binding >= BINDING_FIRST_TEXEL_BUFFER) return VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+}
 
 std::string precisionPreamble(Precision precision) {
     return precision == Precision::Fp64 ? "#define RT_FP64 1\n" : "";
@@ -50,14 +56,12 @@ TracePipeline createTracePipeline(const Context& context, const std::vector<std:
                                   VkPipelineCache cache, TraceSpecialization specialization) {
     TracePipeline result;
     OnFailure release([&] { destroyTracePipeline(context, result); });
-    // Binding 0 is the output image the kernel writes; every other binding is a
-    // read-only range of the scene buffer (see shaders/shared.h for what each holds).
+    // Binding 0 is the output image the kernel writes; the others are ranges of the scene
+    // buffer, or views of them (see shaders/shared.h for what each holds).
     std::vector<VkDescriptorSetLayoutBinding> bindings;
-    for (std::uint32_t binding = 0; binding < BINDING_COUNT; ++binding) {
-        VkDescriptorType type = binding == BINDING_OUTPUT_IMAGE ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
-                                                                : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        bindings.push_back({binding, type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
-    }
+    for (std::uint32_t binding = 0; binding < BINDING_COUNT; ++binding)
+        bindings.push_back(
+            {binding, bindingDescriptorType(binding), 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
     VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     setInfo.bindingCount = static_cast<std::uint32_t>(bindings.size());
     setInfo.pBindings = bindings.data();
@@ -94,7 +98,8 @@ TracePipeline createTracePipeline(const Context& context, const std::vector<std:
         {SPEC_WATERTIGHT_TRIANGLES, offsetof(S, watertightTriangles), sizeof(VkBool32)},
         {SPEC_SCALED_RAY_OFFSET, offsetof(S, scaledRayOffset), sizeof(VkBool32)},
         {SPEC_HAS_MIRRORS, offsetof(S, hasMirrors), sizeof(VkBool32)},
-        {SPEC_HAS_SPECULAR, offsetof(S, hasSpecular), sizeof(VkBool32)}};
+        {SPEC_HAS_SPECULAR, offsetof(S, hasSpecular), sizeof(VkBool32)},
+        {SPEC_TEXEL_READS, offsetof(S, texelReads), sizeof(VkBool32)}};
     const VkSpecializationInfo specializationInfo{
         static_cast<std::uint32_t>(std::size(specializationEntries)), specializationEntries,
         sizeof(specialization), &specialization};

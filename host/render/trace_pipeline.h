@@ -23,7 +23,12 @@ struct TraceSpecialization {
     VkBool32 scaledRayOffset = VK_TRUE;     // --offset scaled (else fixed)
     VkBool32 hasMirrors = VK_TRUE;  // some material has ks > 0 and depth > 0: reflection loop
     VkBool32 hasSpecular = VK_TRUE; // some material has ks > 0: the Phong highlight
+    VkBool32 texelReads = VK_TRUE;  // hot arrays through texel buffers (else storage buffers)
 };
+
+// What each binding of shaders/shared.h is: the output image, a storage buffer, or one of
+// the uniform texel buffers from BINDING_FIRST_TEXEL_BUFFER on.
+VkDescriptorType bindingDescriptorType(std::uint32_t binding);
 
 // The method choices' part of the specialization (the scene's part is left as given).
 void applyKernelChoices(TraceSpecialization& specialization, const KernelChoices& choices);

@@ -96,7 +96,7 @@ std::vector<std::vector<std::string>> optionSets() {
         {"--dump-shaders", "dumped shaders"},
         {"--help"},
         {"a.scene", "--validate", "--no-cache", "--progress", "--window", "--redraw-continuously",
-         "--general-kernel"},
+         "--general-kernel", "--storage-reads"},
     };
     for (const char* seed : {"0", "7", "4294967295"})
         sets.push_back({"a.scene", "--seed", seed});

@@ -1,0 +1,114 @@
+// The kernel reads the scene through texel buffers, or through the storage buffers when an
+// array exceeds maxTexelBufferElements (or --storage-reads, hidden, which makes that path
+// reachable on any device): both paths give the same bytes, in fp32 and in fp64 (whose
+// doubles are always read from storage).
+#include "gpu/context.h"
+#include "render/scene_upload.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+
+namespace {
+
+// Spheres and triangles in one scene, so that leaves of both kinds are read.
+std::string mixedScene() {
+    std::string text = "amb: 0.1 0.1 0.1\nlight\npos: 2 3 1\ncol: 1 1 1\n";
+    for (int i = 0; i < 6; ++i) {
+        const std::string x = std::to_string(-2.5 + i);
+        text += "sphere\npos: " + x +
+                " 0.2 -4\nrad: 0.4\ndif: 0.6 0.3 0.2\nspe: 0.3 0.3 0.3\n"
+                "shi: 20\n";
+        text += "triangle\n";
+        for (const char* corner : {" -1 -5\n", " -1 -3\n", " 0 -4\n"}) {
+            const std::string cx = std::to_string(-2.5 + i + (corner[1] == '0' ? 0.4 : 0.0));
+            text +=
+                "pos: " + cx + corner + "nor: 0 1 0\ndif: 0.2 0.5 0.3\nspe: 0.2 0.2 0.2\nshi: 5\n";
+        }
+    }
+    return std::to_string(1 + 6 * 2) + "\n" + text;
+}
+
+std::string fileBytes(const std::filesystem::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+std::string benchJson(const std::vector<std::string>& args) {
+    ProcessResult run = runRaytracer(args);
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    return run.out.substr(run.out.rfind('{'));
+}
+
+TEST(TexelReads, StorageReadsGiveTheSameBytes) {
+    std::filesystem::path dir = freshOutputDir("texel-reads/same-bytes");
+    const std::filesystem::path scene = dir / "mixed.scene";
+    writeTextFile(scene, mixedScene());
+    for (const std::string precision : {"fp32", "fp64"}) {
+        for (const std::string accel : {"bvh", "none"}) {
+            std::string bytes[2];
+            for (int storage = 0; storage < 2; ++storage) {
+                const std::filesystem::path png =
+                    dir / (precision + accel + std::to_string(storage) + ".png");
+                std::vector<std::string> args = {
+                    scene.string(), "-o",  png.string(),  "--width", "48",        "--height", "36",
+                    "--accel",      accel, "--precision", precision, "--validate"};
+                if (storage) args.push_back("--storage-reads");
+                ProcessResult run = runRaytracer(args);
+                ASSERT_EQ(run.exitCode, 0) << run.err;
+                bytes[storage] = fileBytes(png);
+            }
+            EXPECT_FALSE(bytes[0].empty());
+            EXPECT_EQ(bytes[0], bytes[1])
+                << precision << " " << accel << ": the storage-buffer reads changed the image";
+        }
+    }
+}
+
+TEST(TexelReads, BenchSaysWhichPathRan) {
+    std::filesystem::path dir = freshOutputDir("texel-reads/bench");
+    const std::filesystem::path scene = dir / "mixed.scene";
+    writeTextFile(scene, mixedScene());
+    const std::vector<std::string> bench = {scene.string(), "--bench",  "1",  "--width",
+                                            "16",           "--height", "16", "--validate"};
+    EXPECT_NE(benchJson(bench).find("\"texel_reads\": true"), std::string::npos);
+    std::vector<std::string> storage = bench;
+    storage.push_back("--storage-reads");
+    EXPECT_NE(benchJson(storage).find("\"texel_reads\": false"), std::string::npos);
+    // fp64 reads all but its doubles through texel buffers.
+    std::vector<std::string> fp64 = bench;
+    fp64.insert(fp64.end(), {"--precision", "fp64"});
+    EXPECT_NE(benchJson(fp64).find("\"texel_reads\": true"), std::string::npos);
+}
+
+// An array beyond maxTexelBufferElements takes the storage path with a note naming it; a
+// lowered limit on lavapipe stands in for a device with a small one.
+TEST(TexelReads, AnArrayBeyondTheTexelLimitFallsBackWithANote) {
+    Context context;
+    createInstance(context, {}, true);
+    createDevice(context, "");
+    Scene scene;
+    scene.spheres.resize(100);
+    const PackedScene packed = packSceneInFileOrder(scene);
+    GpuScene fits = uploadScene(context, packed);
+    EXPECT_TRUE(fits.texelReads);
+    EXPECT_EQ(fits.storageReadsNote, "");
+    destroyGpuScene(context, fits);
+    context.properties.limits.maxTexelBufferElements = 99;
+    GpuScene beyond = uploadScene(context, packed);
+    EXPECT_FALSE(beyond.texelReads);
+    EXPECT_NE(beyond.storageReadsNote.find("spheres take 100 texels, more than this device's "
+                                           "maxTexelBufferElements of 99"),
+              std::string::npos)
+        << beyond.storageReadsNote;
+    destroyGpuScene(context, beyond);
+    destroyContext(context);
+}
+
+TEST(TexelReads, StorageReadsIsNotInTheUsageText) {
+    EXPECT_EQ(runRaytracer({"--help"}).out.find("--storage-reads"), std::string::npos);
+}
+
+} // namespace
