@@ -5,19 +5,25 @@
 // sceneHasTriangles (trace.comp).
 
 // A ray prepared for the slab test: 1/d per axis (+-inf where d is +-0), and for each of
-// the box's two planes per axis the t to use when the origin lies exactly in that plane.
+// the box's two planes per axis the t to use when the origin lies exactly in that plane:
+// where 1/d is infinite, (plane - origin) * (1/d) would be 0 * inf = NaN, so +-FLOAT_MAX
+// stands in; elsewhere the slab distance is then exactly +-0, and 0 stands in, which
+// compares the same, so the substitution changes nothing on those axes.
 struct BoxRay {
     rvec3 origin;
     rvec3 invDirection;
     rvec3 inLoPlane; // -FLOAT_MAX where the min plane is the near one, +FLOAT_MAX where far
-    rvec3 inHiPlane; // the opposite
+    rvec3 inHiPlane; // the opposite; both 0 on an axis where 1/d is finite
 };
 
 BoxRay boxRay(Ray ray) {
     rvec3 inv = 1.0 / ray.direction;
     bvec3 negative = lessThan(inv, rvec3(0.0)); // -0 gives -inf: negative too
-    return BoxRay(ray.origin, inv, mix(rvec3(-FLOAT_MAX), rvec3(FLOAT_MAX), negative),
-                  mix(rvec3(FLOAT_MAX), rvec3(-FLOAT_MAX), negative));
+    bvec3 parallel = isinf(inv);                // d = +-0, or so small that 1/d overflows
+    rvec3 inLoPlane = mix(rvec3(-FLOAT_MAX), rvec3(FLOAT_MAX), negative);
+    rvec3 inHiPlane = -inLoPlane;
+    return BoxRay(ray.origin, inv, mix(rvec3(0.0), inLoPlane, parallel),
+                  mix(rvec3(0.0), inHiPlane, parallel));
 }
 
 // 1 + 2 gamma(3), gamma(n) = n eps / (1 - n eps), eps = 2^-24: the relative error bound
@@ -37,9 +43,12 @@ const float SLAB_EXIT_SCALE = 1.0000003576;
 // (origin outside); only an origin exactly in the plane would make 0 * inf = NaN, and
 // lavapipe's min/max then drop the NaN and can make the box look missed. That case is
 // taken out before min/max: the ray then runs in the face's plane, which the closed box
-// includes, so that plane limits nothing. No NaN reaches min/max. Returns whether the
-// box is entered at some t in [0, tLimit] (scaled alike), and the entry t. In fp64 the
-// float boxes (rounded outward by the host) are tested in double, exactly converted.
+// includes, so that plane limits nothing. No NaN reaches min/max. An origin in a face's
+// plane with a nonzero direction component keeps its exact distance 0 (boxRay): the slab
+// still bounds t there, so boxes the ray only touches at its origin stay culled beyond
+// it. Returns whether the box is entered at some t in [0, tLimit] (scaled alike), and the
+// entry t. In fp64 the float boxes (rounded outward by the host) are tested in double,
+// exactly converted.
 bool hitBox(BoxRay ray, rvec3 lo, rvec3 hi, real tLimit, out real tEntry) {
     precise rvec3 toLo = lo - ray.origin;
     precise rvec3 toHi = hi - ray.origin;
