@@ -64,14 +64,10 @@ bool intersectSphere(Ray ray, rvec4 centerRadius, real tMax, out real t) {
 }
 
 // A ray prepared for the watertight triangle test: axes permuted so the dominant direction
-// component is z (kx, ky, kz), and the shear that maps the direction onto +z. The axes are
-// kept as which-component flags (isX, isY: components for kx, ky, kz), so a triangle picks
-// its permuted coordinates with selects alone: lavapipe's compiler does not move the
-// index comparisons of v[k] out of the primitive loop.
+// component is z (kx, ky, kz), and the shear that maps the direction onto +z.
 struct ShearedRay {
     rvec3 origin;
-    bvec3 isX;   // kx, ky, kz == 0
-    bvec3 isY;   // kx, ky, kz == 1
+    uvec3 axes;  // kx, ky, kz
     rvec3 shear; // Sx, Sy, Sz
 };
 
@@ -87,14 +83,8 @@ ShearedRay shearRay(Ray ray) {
         ky = swap;
     }
     real dz = ray.direction[kz];
-    uvec3 axes = uvec3(kx, ky, kz);
-    return ShearedRay(ray.origin, equal(axes, uvec3(0u)), equal(axes, uvec3(1u)),
+    return ShearedRay(ray.origin, uvec3(kx, ky, kz),
                       rvec3(ray.direction[kx] / dz, ray.direction[ky] / dz, 1.0 / dz));
-}
-
-// Component k of v, k given by its flags.
-real pickAxis(rvec3 v, bool isX, bool isY) {
-    return isX ? v.x : (isY ? v.y : v.z);
 }
 
 // Watertight ray/triangle test of Woop, Benthin & Wald, "Watertight Ray/Triangle
@@ -106,28 +96,23 @@ real pickAxis(rvec3 v, bool isX, bool isY) {
 // Returns t in (0, tMax) and the barycentric weights of vertices a, b, c.
 bool intersectTriangleWatertight(ShearedRay ray, rvec3 a, rvec3 b, rvec3 c, real tMax, out real t,
                                  out rvec3 barycentric) {
+    uint kx = ray.axes.x, ky = ray.axes.y, kz = ray.axes.z;
     precise rvec3 A = a - ray.origin;
     precise rvec3 B = b - ray.origin;
     precise rvec3 C = c - ray.origin;
-    rvec3 Ak = rvec3(pickAxis(A, ray.isX.x, ray.isY.x), pickAxis(A, ray.isX.y, ray.isY.y),
-                     pickAxis(A, ray.isX.z, ray.isY.z));
-    rvec3 Bk = rvec3(pickAxis(B, ray.isX.x, ray.isY.x), pickAxis(B, ray.isX.y, ray.isY.y),
-                     pickAxis(B, ray.isX.z, ray.isY.z));
-    rvec3 Ck = rvec3(pickAxis(C, ray.isX.x, ray.isY.x), pickAxis(C, ray.isX.y, ray.isY.y),
-                     pickAxis(C, ray.isX.z, ray.isY.z));
-    precise real ax = Ak.x - ray.shear.x * Ak.z;
-    precise real ay = Ak.y - ray.shear.y * Ak.z;
-    precise real bx = Bk.x - ray.shear.x * Bk.z;
-    precise real by = Bk.y - ray.shear.y * Bk.z;
-    precise real cx = Ck.x - ray.shear.x * Ck.z;
-    precise real cy = Ck.y - ray.shear.y * Ck.z;
+    precise real ax = A[kx] - ray.shear.x * A[kz];
+    precise real ay = A[ky] - ray.shear.y * A[kz];
+    precise real bx = B[kx] - ray.shear.x * B[kz];
+    precise real by = B[ky] - ray.shear.y * B[kz];
+    precise real cx = C[kx] - ray.shear.x * C[kz];
+    precise real cy = C[ky] - ray.shear.y * C[kz];
     precise real u = cx * by - cy * bx; // edge functions; u weighs vertex a
     precise real v = ax * cy - ay * cx;
     precise real w = bx * ay - by * ax;
     if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return false;
     real det = u + v + w;
     if (det == 0.0) return false;
-    t = ray.shear.z * (u * Ak.z + v * Bk.z + w * Ck.z) / det;
+    t = ray.shear.z * (u * A[kz] + v * B[kz] + w * C[kz]) / det;
     if (!(t > 0.0 && t < tMax)) return false;
     // A zero-area triangle can still get det != 0 from the rounding of its sheared corners,
     // but a line has no area to hit. Checked last, so only for rays that would hit.
