@@ -125,11 +125,15 @@ uvec2 rightChild(GpuBvhNode node) {
 // Iterative depth-first traversal with a fixed stack (the builder keeps the depth within
 // BVH_STACK_SIZE). A step fetches one node, which holds both children's boxes (Aila &
 // Laine's layout, shared.h), and tests both; the nearer hit child is visited next and the
-// other's reference pushed with its entry distance, and a popped child whose entry lies
-// beyond the closest hit so far is skipped. A leaf is known from its reference, so its
-// primitives are tested without fetching anything but them. Any-hit mode (shadow rays)
-// returns at the first hit found. hit.t is the limit on entry (the light's distance for
-// shadow rays, FLOAT_MAX for closest hit); returns whether any-hit mode found something.
+// other's reference pushed. A popped child is visited whatever the closest hit so far: its
+// own boxes and primitives are tested against that hit, so nothing beyond it is taken.
+// Keeping each entry distance to skip such a child on the pop cost lavapipe more than the
+// visits it saved: it is a third stack array, and a private array indexed at run time
+// lives in memory, where each push is a per-lane load, select and store (measured in
+// docs/performance.md). A leaf is known from its reference, so its primitives are tested
+// without fetching anything but them. Any-hit mode (shadow rays) returns at the first hit
+// found. hit.t is the limit on entry (the light's distance for shadow rays, FLOAT_MAX for
+// closest hit); returns whether any-hit mode found something.
 //
 // Loop shape "while-while" (Aila & Laine, HPG 2009): an inner loop walks interior nodes
 // until the ray stands at a leaf, then the leaf is tested. lavapipe runs 8 rays as one
@@ -139,25 +143,21 @@ uvec2 rightChild(GpuBvhNode node) {
 bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
     ShearedRay sheared = shearRay(ray);
     BoxRay slabRay = boxRay(ray);
-    // Pending children: reference and entry distance. Arrays of scalars: an array of uvec2
-    // for the references cost lavapipe 4% more instructions on table.scene.
+    // Pending children's references. Arrays of scalars: an array of uvec2 for the
+    // references cost lavapipe 4% more instructions on table.scene, one uvec3 array with
+    // the entry distance 4.3% more than three scalar arrays.
     uint stackIndex[BVH_STACK_SIZE];
     uint stackWord[BVH_STACK_SIZE];
-    real stackEntry[BVH_STACK_SIZE];
     uint stackSize = 0u;
     uvec2 child = uvec2(0u); // the root: interior node 0
     bool popNext = false;    // the current child is done with: take the next from the stack
     for (;;) {
         for (;;) {
             if (popNext) {
-                // The nearest pending child that can still hold something nearer than the hit.
+                // The nearest pending child.
                 popNext = false;
-                bool found = false;
-                while (stackSize > 0u && !found) {
-                    --stackSize;
-                    found = stackEntry[stackSize] <= hit.t * SLAB_EXIT_SCALE;
-                }
-                if (!found) return false;
+                if (stackSize == 0u) return false;
+                --stackSize;
                 child = uvec2(stackIndex[stackSize], stackWord[stackSize]);
             }
             if (child.y != 0u) break; // a leaf
@@ -172,7 +172,6 @@ bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
                 uvec2 far = rightFirst ? leftChild(node) : rightChild(node);
                 stackIndex[stackSize] = far.x;
                 stackWord[stackSize] = far.y;
-                stackEntry[stackSize] = rightFirst ? leftEntry : rightEntry;
                 ++stackSize;
                 child = rightFirst ? rightChild(node) : leftChild(node);
             } else if (hitLeft || hitRight) {
