@@ -140,6 +140,9 @@ uvec2 rightChild(GpuBvhNode node) {
 // SIMD vector and executes both sides of every branch, masked; with one loop holding both
 // the interior and the leaf code ("if-if"), each step paid for a leaf test too. Same
 // images, and faster on lavapipe (tools/kernel_costs --baseline compares two builds).
+// For the same reason the next child is popped right where one is done with (a node with
+// neither child hit, a leaf tested), not behind a flag at the top of the inner loop, which
+// every step paid for.
 bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
     ShearedRay sheared = shearRay(ray);
     BoxRay slabRay = boxRay(ray);
@@ -150,16 +153,8 @@ bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
     uint stackWord[BVH_STACK_SIZE];
     uint stackSize = 0u;
     uvec2 child = uvec2(0u); // the root: interior node 0
-    bool popNext = false;    // the current child is done with: take the next from the stack
     for (;;) {
         for (;;) {
-            if (popNext) {
-                // The nearest pending child.
-                popNext = false;
-                if (stackSize == 0u) return false;
-                --stackSize;
-                child = uvec2(stackIndex[stackSize], stackWord[stackSize]);
-            }
             if (child.y != 0u) break; // a leaf
             GpuBvhNode node = bvhNodes[child.x];
             real leftEntry, rightEntry;
@@ -177,11 +172,15 @@ bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
             } else if (hitLeft || hitRight) {
                 child = hitLeft ? leftChild(node) : rightChild(node);
             } else {
-                popNext = true;
+                if (stackSize == 0u) return false;
+                --stackSize;
+                child = uvec2(stackIndex[stackSize], stackWord[stackSize]);
             }
         }
         if (intersectLeaf(ray, sheared, child.x, child.y, anyHitMode, hit)) return true;
-        popNext = true;
+        if (stackSize == 0u) return false;
+        --stackSize;
+        child = uvec2(stackIndex[stackSize], stackWord[stackSize]);
     }
 }
 
