@@ -5,19 +5,25 @@
 // sceneHasTriangles (trace.comp); fetchBvhNode and fetchSphere (scene_reads.glsl).
 
 // A ray prepared for the slab test: 1/d per axis (+-inf where d is +-0), and for each of
-// the box's two planes per axis the t to use when the origin lies exactly in that plane.
+// the box's two planes per axis the t to use when the origin lies exactly in that plane:
+// where 1/d is infinite, (plane - origin) * (1/d) would be 0 * inf = NaN, so +-FLOAT_MAX
+// stands in; elsewhere the slab distance is then exactly +-0, and 0 stands in, which
+// compares the same, so the substitution changes nothing on those axes.
 struct BoxRay {
     rvec3 origin;
     rvec3 invDirection;
     rvec3 inLoPlane; // -FLOAT_MAX where the min plane is the near one, +FLOAT_MAX where far
-    rvec3 inHiPlane; // the opposite
+    rvec3 inHiPlane; // the opposite; both 0 on an axis where 1/d is finite
 };
 
 BoxRay boxRay(Ray ray) {
     rvec3 inv = 1.0 / ray.direction;
     bvec3 negative = lessThan(inv, rvec3(0.0)); // -0 gives -inf: negative too
-    return BoxRay(ray.origin, inv, mix(rvec3(-FLOAT_MAX), rvec3(FLOAT_MAX), negative),
-                  mix(rvec3(FLOAT_MAX), rvec3(-FLOAT_MAX), negative));
+    bvec3 parallel = isinf(inv);                // d = +-0, or so small that 1/d overflows
+    rvec3 inLoPlane = mix(rvec3(-FLOAT_MAX), rvec3(FLOAT_MAX), negative);
+    rvec3 inHiPlane = -inLoPlane;
+    return BoxRay(ray.origin, inv, mix(rvec3(0.0), inLoPlane, parallel),
+                  mix(rvec3(0.0), inHiPlane, parallel));
 }
 
 // 1 + 2 gamma(3), gamma(n) = n eps / (1 - n eps), eps = 2^-24: the relative error bound
@@ -37,9 +43,12 @@ const float SLAB_EXIT_SCALE = 1.0000003576;
 // (origin outside); only an origin exactly in the plane would make 0 * inf = NaN, and
 // lavapipe's min/max then drop the NaN and can make the box look missed. That case is
 // taken out before min/max: the ray then runs in the face's plane, which the closed box
-// includes, so that plane limits nothing. No NaN reaches min/max. Returns whether the
-// box is entered at some t in [0, tLimit] (scaled alike), and the entry t. In fp64 the
-// float boxes (rounded outward by the host) are tested in double, exactly converted.
+// includes, so that plane limits nothing. No NaN reaches min/max. An origin in a face's
+// plane with a nonzero direction component keeps its exact distance 0 (boxRay): the slab
+// still bounds t there, so boxes the ray only touches at its origin stay culled beyond
+// it. Returns whether the box is entered at some t in [0, tLimit] (scaled alike), and the
+// entry t. In fp64 the float boxes (rounded outward by the host) are tested in double,
+// exactly converted.
 bool hitBox(BoxRay ray, rvec3 lo, rvec3 hi, real tLimit, out real tEntry) {
     precise rvec3 toLo = lo - ray.origin;
     precise rvec3 toHi = hi - ray.origin;
@@ -116,41 +125,36 @@ uvec2 rightChild(GpuBvhNode node) {
 // Iterative depth-first traversal with a fixed stack (the builder keeps the depth within
 // BVH_STACK_SIZE). A step fetches one node, which holds both children's boxes (Aila &
 // Laine's layout, shared.h), and tests both; the nearer hit child is visited next and the
-// other's reference pushed with its entry distance, and a popped child whose entry lies
-// beyond the closest hit so far is skipped. A leaf is known from its reference, so its
-// primitives are tested without fetching anything but them. Any-hit mode (shadow rays)
-// returns at the first hit found. hit.t is the limit on entry (the light's distance for
-// shadow rays, FLOAT_MAX for closest hit); returns whether any-hit mode found something.
+// other's reference pushed. A popped child is visited whatever the closest hit so far: its
+// own boxes and primitives are tested against that hit, so nothing beyond it is taken.
+// Keeping each entry distance to skip such a child on the pop cost lavapipe more than the
+// visits it saved: it is a third stack array, and a private array indexed at run time
+// lives in memory, where each push is a per-lane load, select and store (measured in
+// docs/performance.md). A leaf is known from its reference, so its primitives are tested
+// without fetching anything but them. Any-hit mode (shadow rays) returns at the first hit
+// found. hit.t is the limit on entry (the light's distance for shadow rays, FLOAT_MAX for
+// closest hit); returns whether any-hit mode found something.
 //
 // Loop shape "while-while" (Aila & Laine, HPG 2009): an inner loop walks interior nodes
 // until the ray stands at a leaf, then the leaf is tested. lavapipe runs 8 rays as one
 // SIMD vector and executes both sides of every branch, masked; with one loop holding both
 // the interior and the leaf code ("if-if"), each step paid for a leaf test too. Same
 // images, and faster on lavapipe (tools/kernel_costs --baseline compares two builds).
+// For the same reason the next child is popped right where one is done with (a node with
+// neither child hit, a leaf tested), not behind a flag at the top of the inner loop, which
+// every step paid for.
 bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
     ShearedRay sheared = shearRay(ray);
     BoxRay slabRay = boxRay(ray);
-    // Pending children: reference and entry distance. Arrays of scalars: an array of uvec2
-    // for the references cost lavapipe 4% more instructions on table.scene.
+    // Pending children's references. Arrays of scalars: an array of uvec2 for the
+    // references cost lavapipe 4% more instructions on table.scene, one uvec3 array with
+    // the entry distance 4.3% more than three scalar arrays.
     uint stackIndex[BVH_STACK_SIZE];
     uint stackWord[BVH_STACK_SIZE];
-    real stackEntry[BVH_STACK_SIZE];
     uint stackSize = 0u;
     uvec2 child = uvec2(0u); // the root: interior node 0
-    bool popNext = false;    // the current child is done with: take the next from the stack
     for (;;) {
         for (;;) {
-            if (popNext) {
-                // The nearest pending child that can still hold something nearer than the hit.
-                popNext = false;
-                bool found = false;
-                while (stackSize > 0u && !found) {
-                    --stackSize;
-                    found = stackEntry[stackSize] <= hit.t * SLAB_EXIT_SCALE;
-                }
-                if (!found) return false;
-                child = uvec2(stackIndex[stackSize], stackWord[stackSize]);
-            }
             if (child.y != 0u) break; // a leaf
             GpuBvhNode node = fetchBvhNode(child.x);
             real leftEntry, rightEntry;
@@ -163,17 +167,20 @@ bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
                 uvec2 far = rightFirst ? leftChild(node) : rightChild(node);
                 stackIndex[stackSize] = far.x;
                 stackWord[stackSize] = far.y;
-                stackEntry[stackSize] = rightFirst ? leftEntry : rightEntry;
                 ++stackSize;
                 child = rightFirst ? rightChild(node) : leftChild(node);
             } else if (hitLeft || hitRight) {
                 child = hitLeft ? leftChild(node) : rightChild(node);
             } else {
-                popNext = true;
+                if (stackSize == 0u) return false;
+                --stackSize;
+                child = uvec2(stackIndex[stackSize], stackWord[stackSize]);
             }
         }
         if (intersectLeaf(ray, sheared, child.x, child.y, anyHitMode, hit)) return true;
-        popNext = true;
+        if (stackSize == 0u) return false;
+        --stackSize;
+        child = uvec2(stackIndex[stackSize], stackWord[stackSize]);
     }
 }
 
