@@ -172,12 +172,12 @@ bool intersectTriangle(Ray ray, ShearedRay sheared, uint i, real tMax, out real 
 Hit closestHitEveryPrimitive(Ray ray) {
     Hit hit = Hit(FLOAT_MAX, HIT_NONE, 0u, rvec3(0.0));
     real t;
-    for (uint i = 0u; sceneHasSpheres && i < params.counts.x; ++i) {
+    for (uint i = 0u; sceneHasSpheres && i < sphereCount; ++i) {
         if (intersectSphere(ray, fetchSphere(i), hit.t, t)) hit = Hit(t, HIT_SPHERE, i, rvec3(0.0));
     }
     ShearedRay sheared = shearRay(ray);
     rvec3 barycentric;
-    for (uint i = 0u; sceneHasTriangles && i < params.counts.y; ++i) {
+    for (uint i = 0u; sceneHasTriangles && i < triangleCount; ++i) {
         if (intersectTriangle(ray, sheared, i, hit.t, t, barycentric)) {
             hit = Hit(t, HIT_TRIANGLE, i, barycentric);
         }
@@ -188,12 +188,12 @@ Hit closestHitEveryPrimitive(Ray ray) {
 // Whether anything lies on the ray with 0 < t < tMax, testing every primitive.
 bool anyHitEveryPrimitive(Ray ray, real tMax) {
     real t;
-    for (uint i = 0u; sceneHasSpheres && i < params.counts.x; ++i) {
+    for (uint i = 0u; sceneHasSpheres && i < sphereCount; ++i) {
         if (intersectSphere(ray, fetchSphere(i), tMax, t)) return true;
     }
     ShearedRay sheared = shearRay(ray);
     rvec3 barycentric;
-    for (uint i = 0u; sceneHasTriangles && i < params.counts.y; ++i) {
+    for (uint i = 0u; sceneHasTriangles && i < triangleCount; ++i) {
         if (intersectTriangle(ray, sheared, i, tMax, t, barycentric)) return true;
     }
     return false;

@@ -89,7 +89,7 @@ bool inShadow(SurfacePoint s, rvec3 lightPosition, rvec3 l) {
 // it would add exactly 0).
 vec3 shadePhong(SurfacePoint s, rvec3 view) {
     vec3 color = params.ambient.rgb;
-    for (uint i = 0u; i < params.counts.z; ++i) {
+    for (uint i = 0u; i < lightCount; ++i) {
         GpuLight light = fetchLight(i);
         rvec3 lightPosition = light.position.xyz;
         // A light exactly at the point has no direction: l = 0 skips it below.

@@ -40,6 +40,11 @@ layout(push_constant) uniform FrameParamsBlock {
     GpuFrameParams params;
 };
 
+// The scene's counts, copied from the push constants first thing in main, outside all
+// control flow: lavapipe then loads each once for the whole SIMD vector, where a read of
+// params in a loop's condition is a load per lane on every iteration.
+uint sphereCount, triangleCount, lightCount;
+
 // The RGBA8 UNORM image this kernel writes; the host copies it to the screen or a PNG.
 layout(set = 0, binding = BINDING_OUTPUT_IMAGE, rgba8) uniform writeonly image2D outputImage;
 
@@ -128,6 +133,9 @@ uvec2 pixelInTile(uvec2 local) {
 }
 
 void main() {
+    sphereCount = params.counts.x;
+    triangleCount = params.counts.y;
+    lightCount = params.counts.z;
     uvec2 pixel = params.dispatch.xy +
                   gl_WorkGroupID.xy * uvec2(WORKGROUP_SIZE_X, WORKGROUP_SIZE_Y) +
                   pixelInTile(gl_LocalInvocationID.xy);
