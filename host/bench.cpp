@@ -122,6 +122,7 @@ std::string runBenchmark(const Context& context, const Renderer& renderer, Headl
          << ", \"general_kernel\": " << (settings.generalKernel ? "true" : "false")
          << ", \"compiled_out\": " << compiledOutJson(renderer.specialization)
          << ", \"texel_reads\": " << (renderer.specialization.texelReads ? "true" : "false")
+         << ", \"baked_spheres\": " << (renderer.specialization.bakedSpheres ? "true" : "false")
          << ", \"primary_rays_per_second\": "
          << jsonNumber(pixels * settings.samplesPerPixel / (wallMedian * 1e-3)) << "}";
     return json.str();

@@ -173,7 +173,8 @@ Hit closestHitEveryPrimitive(Ray ray) {
     Hit hit = Hit(FLOAT_MAX, HIT_NONE, 0u, rvec3(0.0));
     real t;
     for (uint i = 0u; sceneHasSpheres && i < sphereCount; ++i) {
-        if (intersectSphere(ray, fetchSphere(i), hit.t, t)) hit = Hit(t, HIT_SPHERE, i, rvec3(0.0));
+        if (intersectSphere(ray, sphereToTest(i), hit.t, t))
+            hit = Hit(t, HIT_SPHERE, i, rvec3(0.0));
     }
     ShearedRay sheared = shearRay(ray);
     rvec3 barycentric;

@@ -71,6 +71,13 @@ using uint = std::uint32_t;
 // bool: read the scene through the texel buffers (else through the storage buffers: an
 // array beyond maxTexelBufferElements, or --storage-reads); fp64's doubles never are.
 #define SPEC_TEXEL_READS 9
+// Small scenes' spheres baked in (shaders/baked_spheres.glsl): whether they are, and the
+// sphere and light counts (uint) that the kernel is then compiled for.
+#define SPEC_BAKED_SPHERES 10
+#define SPEC_BAKED_SPHERE_COUNT 11
+#define SPEC_BAKED_LIGHT_COUNT 12
+// The most spheres baked in: the closest-hit loop over them is unrolled, one test each.
+#define MAX_BAKED_SPHERES 15u
 #define SAMPLER_GRID 0u
 #define SAMPLER_STRATIFIED 1u
 #define SAMPLER_R2 2u

@@ -34,6 +34,11 @@ layout(constant_id = SPEC_SCALED_RAY_OFFSET) const bool scaledRayOffset = true;
 // Whether the loops read the scene through texel buffers (scene_reads.glsl); the host turns
 // it off for an array beyond maxTexelBufferElements and for --storage-reads.
 layout(constant_id = SPEC_TEXEL_READS) const bool texelReads = true;
+// A small scene's spheres baked in (baked_spheres.glsl), and its sphere and light counts
+// fixed at compile time.
+layout(constant_id = SPEC_BAKED_SPHERES) const bool bakedSpheres = false;
+layout(constant_id = SPEC_BAKED_SPHERE_COUNT) const uint bakedSphereCount = 0u;
+layout(constant_id = SPEC_BAKED_LIGHT_COUNT) const uint bakedLightCount = 0u;
 
 // Camera, counts, image size, samples and depth for this dispatch (see GpuFrameParams).
 layout(push_constant) uniform FrameParamsBlock {
@@ -42,7 +47,8 @@ layout(push_constant) uniform FrameParamsBlock {
 
 // The scene's counts, copied from the push constants first thing in main, outside all
 // control flow: lavapipe then loads each once for the whole SIMD vector, where a read of
-// params in a loop's condition is a load per lane on every iteration.
+// params in a loop's condition is a load per lane on every iteration. With baked spheres,
+// the sphere and light counts are constants.
 uint sphereCount, triangleCount, lightCount;
 
 // The RGBA8 UNORM image this kernel writes; the host copies it to the screen or a PNG.
@@ -91,6 +97,7 @@ layout(set = 0, binding = BINDING_ACCUMULATION, std430) buffer AccumulationBuffe
 };
 
 #include "scene_reads.glsl"
+#include "baked_spheres.glsl"
 #include "camera.glsl"
 #include "sampling.glsl"
 #include "ray_offset.glsl"
@@ -133,9 +140,10 @@ uvec2 pixelInTile(uvec2 local) {
 }
 
 void main() {
-    sphereCount = params.counts.x;
+    sphereCount = bakedSpheres ? bakedSphereCount : params.counts.x;
     triangleCount = params.counts.y;
-    lightCount = params.counts.z;
+    lightCount = bakedSpheres ? bakedLightCount : params.counts.z;
+    loadBakedSpheres();
     uvec2 pixel = params.dispatch.xy +
                   gl_WorkGroupID.xy * uvec2(WORKGROUP_SIZE_X, WORKGROUP_SIZE_Y) +
                   pixelInTile(gl_LocalInvocationID.xy);

@@ -98,6 +98,14 @@ TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderS
         specialization.hasSpheres = specialization.hasTriangles = VK_TRUE;
         specialization.hasSpecular = specialization.hasMirrors = VK_TRUE;
     }
+    // A small scene's spheres baked in (shaders/baked_spheres.glsl): on the brute-force path
+    // only, and not for the general kernel, whose point is to run any scene.
+    if (!specialization.useHierarchy && !settings.generalKernel &&
+        packed.spheres.size() <= MAX_BAKED_SPHERES) {
+        specialization.bakedSpheres = VK_TRUE;
+        specialization.bakedSphereCount = static_cast<std::uint32_t>(packed.spheres.size());
+        specialization.bakedLightCount = static_cast<std::uint32_t>(packed.lights.size());
+    }
     applyKernelChoices(specialization, settings.kernel);
     return specialization;
 }

@@ -16,7 +16,7 @@
 #include <string>
 
 // Hashed as bytes for the pipeline cache's key: no padding may hide in it.
-static_assert(sizeof(TraceSpecialization) == 10 * sizeof(std::uint32_t));
+static_assert(sizeof(TraceSpecialization) == 13 * sizeof(std::uint32_t));
 
 VkDescriptorType bindingDescriptorType(std::uint32_t binding) {
     if (binding == BINDING_OUTPUT_IMAGE) return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
@@ -99,7 +99,10 @@ TracePipeline createTracePipeline(const Context& context, const std::vector<std:
         {SPEC_SCALED_RAY_OFFSET, offsetof(S, scaledRayOffset), sizeof(VkBool32)},
         {SPEC_HAS_MIRRORS, offsetof(S, hasMirrors), sizeof(VkBool32)},
         {SPEC_HAS_SPECULAR, offsetof(S, hasSpecular), sizeof(VkBool32)},
-        {SPEC_TEXEL_READS, offsetof(S, texelReads), sizeof(VkBool32)}};
+        {SPEC_TEXEL_READS, offsetof(S, texelReads), sizeof(VkBool32)},
+        {SPEC_BAKED_SPHERES, offsetof(S, bakedSpheres), sizeof(VkBool32)},
+        {SPEC_BAKED_SPHERE_COUNT, offsetof(S, bakedSphereCount), sizeof(std::uint32_t)},
+        {SPEC_BAKED_LIGHT_COUNT, offsetof(S, bakedLightCount), sizeof(std::uint32_t)}};
     const VkSpecializationInfo specializationInfo{
         static_cast<std::uint32_t>(std::size(specializationEntries)), specializationEntries,
         sizeof(specialization), &specialization};

@@ -24,6 +24,11 @@ struct TraceSpecialization {
     VkBool32 hasMirrors = VK_TRUE;  // some material has ks > 0 and depth > 0: reflection loop
     VkBool32 hasSpecular = VK_TRUE; // some material has ks > 0: the Phong highlight
     VkBool32 texelReads = VK_TRUE;  // hot arrays through texel buffers (else storage buffers)
+    // A small scene's spheres baked in (shaders/baked_spheres.glsl), and the sphere and
+    // light counts the kernel is then compiled for.
+    VkBool32 bakedSpheres = VK_FALSE;
+    std::uint32_t bakedSphereCount = 0;
+    std::uint32_t bakedLightCount = 0;
 };
 
 // What each binding of shaders/shared.h is: the output image, a storage buffer, or one of

@@ -3,6 +3,7 @@
 #include "scene/scene_loader.h"
 #include "test_support.h"
 
+#include <glm/vec2.hpp>
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -353,9 +354,32 @@ std::string fileBytes(const std::filesystem::path& path) {
     return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
 }
 
+// The most primitives the brute-force path takes, with baked spheres
+// (shaders/baked_spheres.glsl): 7 mirror spheres and 8 triangles, and 4 lights.
+std::string largestBakedScene() {
+    std::string text = "amb: 0.1 0.1 0.1\n";
+    for (int i = 0; i < 7; ++i)
+        text += "sphere\npos: " + std::to_string(i - 3) +
+                " 0 -4\nrad: 0.45\n"
+                "dif: 0.5 0.2 0.2\nspe: 0.3 0.3 0.3\nshi: 20\n";
+    for (int i = 0; i < 8; ++i) {
+        const double x = i - 4.0, z = -5.0 - i % 2;
+        text += "triangle\n";
+        for (const glm::dvec2 corner :
+             {glm::dvec2(x - 0.5, -1.5), glm::dvec2(x + 0.5, -1.5), glm::dvec2(x, -0.5)})
+            text += "pos: " + std::to_string(corner.x) + " " + std::to_string(corner.y) + " " +
+                    std::to_string(z) + "\nnor: 0 1 0.5\ndif: 0.2 0.5 0.2\nspe: 0 0 0\nshi: 1\n";
+    }
+    for (int i = 0; i < 4; ++i)
+        text += "light\npos: " + std::to_string(2 * i - 3) + " 3 0\ncol: 0.3 0.3 0.3\n";
+    return "19\n" + text;
+}
+
 // --general-kernel (hidden, for tools/kernel_costs) keeps in what the scene does not need:
 // it may cost time, never a pixel. Without ks: highlight and reflection loop compiled out
-// of the specialised kernel; with ks but no triangles: the triangle code.
+// of the specialised kernel; with ks but no triangles: the triangle code. All three scenes
+// are small enough for their spheres to be baked into the specialised kernel, which the
+// general one never does.
 TEST(CommandLine, GeneralKernelGivesTheSameBytes) {
     std::filesystem::path dir = freshOutputDir("cli/general-kernel");
     const std::string matte =
@@ -364,8 +388,8 @@ TEST(CommandLine, GeneralKernelGivesTheSameBytes) {
         "pos: 2 -1 -4\nnor: 0 1 0\ndif: 0.2 0.5 0.2\nspe: 0 0 0\nshi: 1\n"
         "pos: 0 2 -5\nnor: 0 1 0\ndif: 0.2 0.5 0.2\nspe: 0 0 0\nshi: 1\n"
         "light\npos: 2 2 0\ncol: 1 1 1\n";
-    const std::vector<std::pair<std::string, std::string>> scenes = {{"matte", matte},
-                                                                     {"shiny", minimalScene()}};
+    const std::vector<std::pair<std::string, std::string>> scenes = {
+        {"matte", matte}, {"shiny", minimalScene()}, {"largest-baked", largestBakedScene()}};
     for (const auto& [name, text] : scenes) {
         std::filesystem::path scene = dir / (name + ".scene");
         writeTextFile(scene, text);
@@ -390,13 +414,17 @@ TEST(CommandLine, GeneralKernelGivesTheSameBytes) {
             ProcessResult run = runRaytracer(args);
             ASSERT_EQ(run.exitCode, 0) << run.err;
             const std::string json = run.out.substr(run.out.rfind('{'));
-            const std::string specialised =
-                name == "matte" ? "[\"highlight\", \"mirrors\"]" : "[\"triangles\"]";
+            const std::string specialised = name == "matte"   ? "[\"highlight\", \"mirrors\"]"
+                                            : name == "shiny" ? "[\"triangles\"]"
+                                                              : "[]";
             const std::string expected =
                 general ? "\"general_kernel\": true, \"compiled_out\": []"
                         : "\"general_kernel\": false, \"compiled_out\": " + specialised;
             EXPECT_NE(json.find(expected), std::string::npos)
                 << expected << " missing from " << json;
+            const std::string baked =
+                general ? "\"baked_spheres\": false" : "\"baked_spheres\": true";
+            EXPECT_NE(json.find(baked), std::string::npos) << baked << " missing from " << json;
         }
     }
 }

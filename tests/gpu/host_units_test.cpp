@@ -215,6 +215,31 @@ TEST(KernelVariants, GeneralKernelIgnoresTheContentButKeepsChoicesAndHierarchy) 
     EXPECT_TRUE(general.watertightTriangles);
 }
 
+// A small scene's spheres are baked in (shaders/baked_spheres.glsl): up to
+// MAX_BAKED_SPHERES of them on the brute-force path, with any number of lights, and never
+// for the general kernel.
+TEST(KernelVariants, SmallScenesSpheresAreBakedInUpToTheLimit) {
+    Material matte{glm::dvec3(0.5), glm::dvec3(0.0), 10};
+    RenderSettings settings;
+    const std::vector<Material> most(MAX_BAKED_SPHERES, matte);
+    TraceSpecialization baked =
+        traceSpecialization(packSceneInFileOrder(sceneWith(most, 6)), settings);
+    EXPECT_TRUE(baked.bakedSpheres);
+    EXPECT_EQ(baked.bakedSphereCount, MAX_BAKED_SPHERES);
+    EXPECT_EQ(baked.bakedLightCount, 6u);
+
+    std::vector<Material> oneTooMany = most;
+    oneTooMany.push_back(matte); // as --accel none gives it: brute force, too many to bake
+    EXPECT_FALSE(
+        traceSpecialization(packSceneInFileOrder(sceneWith(oneTooMany, 1)), settings).bakedSpheres);
+    PackedScene withHierarchy = packSceneInFileOrder(sceneWith({matte}, 1));
+    withHierarchy.bvhNodes.resize(1);
+    EXPECT_FALSE(traceSpecialization(withHierarchy, settings).bakedSpheres);
+    settings.generalKernel = true;
+    EXPECT_FALSE(
+        traceSpecialization(packSceneInFileOrder(sceneWith({matte}, 1)), settings).bakedSpheres);
+}
+
 TEST(KernelVariants, MethodChoicesBecomeSpecializationConstants) {
     RenderSettings settings;
     TraceSpecialization robust =
