@@ -13,9 +13,15 @@
 //   x = (2 (i + u) / W - 1) * camera.x,  y = (1 - 2 (j + v) / H) * camera.y,
 //   direction = normalize(x, y, -1)
 
+// What a ray leaves: no triangle (NO_TRIANGLE: primary rays, rays leaving a sphere, and
+// every ray unless --offset error-bound), or the triangle whose tests skip it (a plane
+// cannot be hit again by a ray leaving it; ray_offset.glsl).
+const uint NO_TRIANGLE = 0xffffffffu;
+
 struct Ray {
     rvec3 origin;    // real: float, or double with --precision fp64 (precision.glsl)
     rvec3 direction; // unit length
+    uint leaving;    // the triangle the ray leaves, or NO_TRIANGLE
 };
 
 // v rotated by the unit quaternion q (xyz vector part, w scalar part). For the identity
@@ -34,5 +40,5 @@ Ray cameraRay(uvec2 pixel, vec2 uv) {
                     1.0 - 2.0 * (float(pixel.y) + uv.y) / size.y);
     vec3 direction =
         rotateByQuaternion(params.cameraOrientation, vec3(ndc * params.camera.xy, -1.0));
-    return Ray(params.cameraOrigin.xyz, normalize(direction));
+    return Ray(params.cameraOrigin.xyz, normalize(direction), NO_TRIANGLE);
 }

@@ -157,9 +157,11 @@ void triangleCorners(uint i, out rvec3 a, out rvec3 b, out rvec3 c) {
 }
 
 // Triangle i against the ray with the test chosen by --triangle-test (a specialization
-// constant: the other is compiled out, and so is the shear setup when unused).
+// constant: the other is compiled out, and so is the shear setup when unused). The
+// triangle a ray leaves is never hit by it (--offset error-bound, ray_offset.glsl).
 bool intersectTriangle(Ray ray, ShearedRay sheared, uint i, real tMax, out real t,
                        out rvec3 barycentric) {
+    if (rayOffsetKind == RAY_OFFSET_ERROR_BOUND && i == ray.leaving) return false;
     rvec3 a, b, c;
     triangleCorners(i, a, b, c);
     if (watertightTriangles)

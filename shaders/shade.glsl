@@ -11,6 +11,7 @@ struct SurfacePoint {
     vec3 kd;               // diffuse colour
     vec3 ks;               // specular colour, also the mirror weight
     float shininess;       // Phong exponent
+    uint triangle;         // the triangle hit, or NO_TRIANGLE for a sphere
 };
 
 // v scaled to unit length, or fallback when v is zero (normalize(0) is NaN on lavapipe);
@@ -42,6 +43,7 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
         s.kd = m.diffuseShininess.xyz;
         s.ks = m.specular.xyz;
         s.shininess = m.diffuseShininess.w;
+        s.triangle = NO_TRIANGLE;
     } else {
         uvec3 v = fetchTriangle(hit.index);
         rvec3 w = hit.barycentric;
@@ -61,16 +63,18 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
         s.kd = kdShininess.xyz;
         s.shininess = kdShininess.w;
         s.ks = wf.x * ma.specular.xyz + wf.y * mb.specular.xyz + wf.z * mc.specular.xyz;
+        s.triangle = hit.index;
     }
     if (dot(s.normal, ray.direction) > 0.0) s.normal = -s.normal;
     return s;
 }
 
 // A ray from the surface point in direction d (unit), its origin offset to the side of the
-// surface d leaves on, so it cannot hit the surface it starts from.
+// surface d leaves on, so it cannot hit the surface it starts from (ray_offset.glsl).
 Ray leavingRay(SurfacePoint s, rvec3 d) {
     rvec3 side = dot(s.geometricNormal, d) > 0.0 ? s.geometricNormal : -s.geometricNormal;
-    return Ray(offsetRayOrigin(s.position, side, s.magnitude), d);
+    uint leaving = rayOffsetKind == RAY_OFFSET_ERROR_BOUND ? s.triangle : NO_TRIANGLE;
+    return Ray(offsetRayOrigin(s.position, side, s.magnitude), d, leaving);
 }
 
 // Whether any surface lies strictly between the point and the light (unit direction l):
@@ -80,7 +84,7 @@ bool inShadow(SurfacePoint s, rvec3 lightPosition, rvec3 l) {
     rvec3 toLight = lightPosition - ray.origin;
     real lightDistance = length(toLight);
     ray.direction = toLight / lightDistance;
-    return anyHit(ray, lightDistance);
+    return anyHit(ray, shadowRayLength(ray.origin, lightPosition, lightDistance));
 }
 
 // Local Phong colour seen along direction -view: ambient once, then per unshadowed light

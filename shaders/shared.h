@@ -65,7 +65,7 @@ using uint = std::uint32_t;
 #define SPEC_SAMPLER 3              // uint, SAMPLER_*: sample positions inside a pixel (--sampler)
 #define SPEC_STABLE_SPHERE_TEST 4   // bool: Ray Tracing Gems ch. 7, else the textbook quadratic
 #define SPEC_WATERTIGHT_TRIANGLES 5 // bool: Woop et al. 2013, else Moller-Trumbore
-#define SPEC_SCALED_RAY_OFFSET 6    // bool: Waechter-Binder, scale-relative; else a fixed 1e-4
+#define SPEC_RAY_OFFSET 6           // uint, RAY_OFFSET_*: secondary-ray origins (--offset)
 #define SPEC_HAS_MIRRORS 7          // bool: some material has ks > 0 and --depth > 0
 #define SPEC_HAS_SPECULAR 8         // bool: some material has ks > 0 (else no Phong highlight)
 // bool: read the scene through the texel buffers (else through the storage buffers: an
@@ -78,6 +78,9 @@ using uint = std::uint32_t;
 #define SPEC_BAKED_LIGHT_COUNT 12
 // The most spheres baked in: the closest-hit loop over them is unrolled, one test each.
 #define MAX_BAKED_SPHERES 15u
+#define RAY_OFFSET_FIXED 0u       // 1e-4 along the normal
+#define RAY_OFFSET_SCALED 1u      // Waechter-Binder, scale-relative
+#define RAY_OFFSET_ERROR_BOUND 2u // the hit point's rounding-error bound, own triangle skipped
 #define SAMPLER_GRID 0u
 #define SAMPLER_STRATIFIED 1u
 #define SAMPLER_R2 2u

@@ -30,7 +30,7 @@ layout(constant_id = SPEC_HAS_SPECULAR) const bool sceneHasSpecular = true;
 layout(constant_id = SPEC_SAMPLER) const uint samplerKind = SAMPLER_R2;
 layout(constant_id = SPEC_STABLE_SPHERE_TEST) const bool stableSphereTest = true;
 layout(constant_id = SPEC_WATERTIGHT_TRIANGLES) const bool watertightTriangles = true;
-layout(constant_id = SPEC_SCALED_RAY_OFFSET) const bool scaledRayOffset = true;
+layout(constant_id = SPEC_RAY_OFFSET) const uint rayOffsetKind = RAY_OFFSET_SCALED;
 // Whether the loops read the scene through texel buffers (scene_reads.glsl); the host turns
 // it off for an array beyond maxTexelBufferElements and for --storage-reads.
 layout(constant_id = SPEC_TEXEL_READS) const bool texelReads = true;

@@ -117,8 +117,9 @@ std::string usageText() {
            "                        Tracing Gems ch. 7 (default stable)\n"
            "  --triangle-test mt|watertight  ray/triangle test: Moller-Trumbore, or Woop,\n"
            "                        Benthin and Wald 2013 (default watertight)\n"
-           "  --offset fixed|scaled  secondary-ray origins: 1e-4 along the normal, or\n"
-           "                        Waechter-Binder scale-relative (default scaled)\n"
+           "  --offset fixed|scaled|error-bound  secondary-ray origins: 1e-4 along the\n"
+           "                        normal, Waechter-Binder scale-relative, or the hit point's\n"
+           "                        rounding-error bound (default scaled)\n"
            "  --depth D             reflection bounces after the primary hit, 0 to " +
            std::to_string(MAX_DEPTH) +
            " (default 5)\n"

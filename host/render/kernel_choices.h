@@ -20,7 +20,13 @@ enum class Sampler : std::uint32_t {
 enum class Precision { Fp32, Fp64 };     // the geometric arithmetic's type
 enum class SphereTest { Naive, Stable }; // textbook quadratic, or Ray Tracing Gems ch. 7
 enum class TriangleTest { MollerTrumbore, Watertight }; // Moller-Trumbore 1997, or Woop et al. 2013
-enum class RayOffset { Fixed, Scaled };                 // 1e-4 along the normal, or Waechter-Binder
+// Secondary-ray origins: 1e-4 along the normal, Waechter-Binder scale-relative, or the hit
+// point's rounding-error bound with the own triangle skipped (shaders/ray_offset.glsl).
+enum class RayOffset : std::uint32_t {
+    Fixed = RAY_OFFSET_FIXED,
+    Scaled = RAY_OFFSET_SCALED,
+    ErrorBound = RAY_OFFSET_ERROR_BOUND,
+};
 
 struct KernelChoices {
     Sampler sampler = Sampler::R2;
@@ -57,7 +63,8 @@ inline const ChoiceNames<TriangleTest>& triangleTestNames() {
 }
 inline const ChoiceNames<RayOffset>& rayOffsetNames() {
     static const ChoiceNames<RayOffset> names = {{"fixed", RayOffset::Fixed},
-                                                 {"scaled", RayOffset::Scaled}};
+                                                 {"scaled", RayOffset::Scaled},
+                                                 {"error-bound", RayOffset::ErrorBound}};
     return names;
 }
 

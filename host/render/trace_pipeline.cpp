@@ -32,7 +32,7 @@ void applyKernelChoices(TraceSpecialization& specialization, const KernelChoices
     specialization.sampler = static_cast<std::uint32_t>(choices.sampler);
     specialization.stableSphereTest = choices.sphereTest == SphereTest::Stable;
     specialization.watertightTriangles = choices.triangleTest == TriangleTest::Watertight;
-    specialization.scaledRayOffset = choices.offset == RayOffset::Scaled;
+    specialization.rayOffset = static_cast<std::uint32_t>(choices.offset);
 }
 
 // Everything that decides the SPIR-V: the compiler's version, how it is called (bump
@@ -96,7 +96,7 @@ TracePipeline createTracePipeline(const Context& context, const std::vector<std:
         {SPEC_SAMPLER, offsetof(S, sampler), sizeof(std::uint32_t)},
         {SPEC_STABLE_SPHERE_TEST, offsetof(S, stableSphereTest), sizeof(VkBool32)},
         {SPEC_WATERTIGHT_TRIANGLES, offsetof(S, watertightTriangles), sizeof(VkBool32)},
-        {SPEC_SCALED_RAY_OFFSET, offsetof(S, scaledRayOffset), sizeof(VkBool32)},
+        {SPEC_RAY_OFFSET, offsetof(S, rayOffset), sizeof(std::uint32_t)},
         {SPEC_HAS_MIRRORS, offsetof(S, hasMirrors), sizeof(VkBool32)},
         {SPEC_HAS_SPECULAR, offsetof(S, hasSpecular), sizeof(VkBool32)},
         {SPEC_TEXEL_READS, offsetof(S, texelReads), sizeof(VkBool32)},

@@ -14,13 +14,13 @@
 // lavapipe a branch on a push constant would still run both sides, masked.
 // The defaults are the general kernel: robust methods, any scene content.
 struct TraceSpecialization {
-    VkBool32 useHierarchy = VK_FALSE;       // walk the BVH rather than test every primitive
-    VkBool32 hasSpheres = VK_TRUE;          // the scene holds spheres
-    VkBool32 hasTriangles = VK_TRUE;        // the scene holds triangles
-    std::uint32_t sampler = SAMPLER_R2;     // --sampler
-    VkBool32 stableSphereTest = VK_TRUE;    // --sphere-test stable (else naive)
-    VkBool32 watertightTriangles = VK_TRUE; // --triangle-test watertight (else mt)
-    VkBool32 scaledRayOffset = VK_TRUE;     // --offset scaled (else fixed)
+    VkBool32 useHierarchy = VK_FALSE;            // walk the BVH rather than test every primitive
+    VkBool32 hasSpheres = VK_TRUE;               // the scene holds spheres
+    VkBool32 hasTriangles = VK_TRUE;             // the scene holds triangles
+    std::uint32_t sampler = SAMPLER_R2;          // --sampler
+    VkBool32 stableSphereTest = VK_TRUE;         // --sphere-test stable (else naive)
+    VkBool32 watertightTriangles = VK_TRUE;      // --triangle-test watertight (else mt)
+    std::uint32_t rayOffset = RAY_OFFSET_SCALED; // --offset
     VkBool32 hasMirrors = VK_TRUE;  // some material has ks > 0 and depth > 0: reflection loop
     VkBool32 hasSpecular = VK_TRUE; // some material has ks > 0: the Phong highlight
     VkBool32 texelReads = VK_TRUE;  // hot arrays through texel buffers (else storage buffers)

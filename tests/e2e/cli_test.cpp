@@ -63,7 +63,8 @@ TEST(CommandLine, BadOptionValuesAreUsageErrors) {
         {{"x.scene", "--sphere-test", "fast"}, "--sphere-test expects naive or stable, got 'fast'"},
         {{"x.scene", "--triangle-test", "MT"},
          "--triangle-test expects mt or watertight, got 'MT'"},
-        {{"x.scene", "--offset", "1e-4"}, "--offset expects fixed or scaled, got '1e-4'"},
+        {{"x.scene", "--offset", "1e-4"},
+         "--offset expects fixed, scaled or error-bound, got '1e-4'"},
         {{"x.scene", "--sampler"}, "--sampler expects a value"},
         {{"x.scene", "--threads", "0"}, "--threads expects a whole number from 1 to 256, got '0'"},
     };

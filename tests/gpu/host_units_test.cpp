@@ -245,14 +245,16 @@ TEST(KernelVariants, MethodChoicesBecomeSpecializationConstants) {
     TraceSpecialization robust =
         traceSpecialization(packSceneInFileOrder(sceneWith({}, 1)), settings);
     EXPECT_EQ(robust.sampler, SAMPLER_R2);
-    EXPECT_TRUE(robust.stableSphereTest && robust.watertightTriangles && robust.scaledRayOffset);
+    EXPECT_TRUE(robust.stableSphereTest && robust.watertightTriangles);
+    EXPECT_EQ(robust.rayOffset, RAY_OFFSET_SCALED);
     settings.kernel = {
         Sampler::Stratified, 3, Precision::Fp64, SphereTest::Naive, TriangleTest::MollerTrumbore,
         RayOffset::Fixed};
     TraceSpecialization naive =
         traceSpecialization(packSceneInFileOrder(sceneWith({}, 1)), settings);
     EXPECT_EQ(naive.sampler, SAMPLER_STRATIFIED);
-    EXPECT_FALSE(naive.stableSphereTest || naive.watertightTriangles || naive.scaledRayOffset);
+    EXPECT_FALSE(naive.stableSphereTest || naive.watertightTriangles);
+    EXPECT_EQ(naive.rayOffset, RAY_OFFSET_FIXED);
 }
 
 TEST(ScenePacking, Fp64KeepsGeometryInDoubleAndItsBoxesHoldIt) {

@@ -54,7 +54,7 @@ def check_stability(binary, source, out):
                 for value in values for precision in ("fp32", "fp64")
                 for s in (("stable", "naive") if "s" in axes else ("stable",))
                 for t in (("watertight", "mt") if "t" in axes else ("watertight",))
-                for o in ("scaled", "fixed")}
+                for o in ("scaled", "fixed", "error-bound")}
     got = [(r["family"], r["value"], r["precision"], r["sphere_test"], r["triangle_test"],
             r["offset"]) for r in rows]
     if len(got) != len(expected) or set(got) != expected:

@@ -101,9 +101,9 @@ std::vector<std::vector<std::string>> optionSets() {
     for (const char* seed : {"0", "7", "4294967295"})
         sets.push_back({"a.scene", "--seed", seed});
     const std::vector<std::pair<const char*, std::vector<const char*>>> choices = {
-        {"--sampler", {"grid", "stratified", "r2"}}, {"--precision", {"fp32", "fp64"}},
-        {"--sphere-test", {"naive", "stable"}},      {"--triangle-test", {"mt", "watertight"}},
-        {"--offset", {"fixed", "scaled"}},
+        {"--sampler", {"grid", "stratified", "r2"}},      {"--precision", {"fp32", "fp64"}},
+        {"--sphere-test", {"naive", "stable"}},           {"--triangle-test", {"mt", "watertight"}},
+        {"--offset", {"fixed", "scaled", "error-bound"}},
     };
     for (const auto& [flag, names] : choices)
         for (const char* name : names)
