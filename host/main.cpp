@@ -6,8 +6,6 @@
 #include "cli/render_settings.h"
 #include "gpu/cpu_driver.h"
 #include "gpu/image_limits.h"
-#include "gpu/shader_compiler.h"
-#include "gpu/vk_check.h"
 #include "render/headless.h"
 #include "render/interrupt.h"
 #include "render/kernel_sources.h"
@@ -15,7 +13,6 @@
 #include "window/window.h"
 
 #include <chrono>
-#include <cstdio>
 #include <iostream>
 
 namespace {

@@ -13,9 +13,9 @@
 //   x = (2 (i + u) / W - 1) * camera.x,  y = (1 - 2 (j + v) / H) * camera.y,
 //   direction = normalize(x, y, -1)
 
-// What a ray leaves: no triangle (NO_TRIANGLE: primary rays, rays leaving a sphere, and
-// every ray unless --offset error-bound), or the triangle whose tests skip it (a plane
-// cannot be hit again by a ray leaving it; ray_offset.glsl).
+// What a ray leaves: no triangle (NO_TRIANGLE: primary rays and rays leaving a sphere), or
+// the triangle that, with --offset error-bound, its tests skip (a plane cannot be hit
+// again by a ray leaving it; ray_offset.glsl, intersectTriangle).
 const uint NO_TRIANGLE = 0xffffffffu;
 
 struct Ray {
@@ -33,7 +33,7 @@ vec3 rotateByQuaternion(vec4 q, vec3 v) {
 // The primary ray through the point (u, v) of pixel (i, j): the camera formula of docs/model.md in
 // camera space, then placed in the world by params.cameraOrigin and cameraOrientation
 // (--camera-pos/-target/-up). The direction is rotated before it is normalised, so the
-// default camera (identity, origin 0) gives exactly the the default camera's rays.
+// default camera (identity, origin 0) gives exactly the rays of docs/model.md.
 Ray cameraRay(uvec2 pixel, vec2 uv) {
     vec2 size = vec2(params.image.xy);
     vec2 ndc = vec2(2.0 * (float(pixel.x) + uv.x) / size.x - 1.0,

@@ -56,6 +56,6 @@ vec2 sampleOffset(uvec2 pixel, uint s, uint n) {
     uint h1 = hashUint(hashUint(hashUint(pixel.x) ^ pixel.y) ^ s);
     if (seed != 0u) h1 = hashUint(h1 ^ hashUint(seed)); // seed 0: the jitter of earlier versions
     uint h2 = hashUint(h1);
-    vec2 jitter = vec2(h1 >> 8, h2 >> 8) * (1.0 / 16777216.0);        // 24 bits, in [0, 1)
+    vec2 jitter = unitFromBits(uvec2(h1, h2));
     return min((vec2(cell) + jitter) / vec2(grid), vec2(0.99999994)); // rounding may reach 1
 }

@@ -73,8 +73,7 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
 // surface d leaves on, so it cannot hit the surface it starts from (ray_offset.glsl).
 Ray leavingRay(SurfacePoint s, rvec3 d) {
     rvec3 side = dot(s.geometricNormal, d) > 0.0 ? s.geometricNormal : -s.geometricNormal;
-    uint leaving = rayOffsetKind == RAY_OFFSET_ERROR_BOUND ? s.triangle : NO_TRIANGLE;
-    return Ray(offsetRayOrigin(s.position, side, s.magnitude), d, leaving);
+    return Ray(offsetRayOrigin(s.position, side, s.magnitude), d, s.triangle);
 }
 
 // Whether any surface lies strictly between the point and the light (unit direction l):

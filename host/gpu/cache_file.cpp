@@ -1,5 +1,7 @@
 #include "gpu/cache_file.h"
 
+#include "base/hash.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>

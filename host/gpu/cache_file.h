@@ -3,8 +3,6 @@
 // temporary file and renamed, so a reader never sees half a file.
 #pragma once
 
-#include "base/hash.h"
-
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>

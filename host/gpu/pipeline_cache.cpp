@@ -1,5 +1,6 @@
 #include "gpu/pipeline_cache.h"
 
+#include "base/hash.h"
 #include "gpu/cache_file.h"
 #include "gpu/vk_check.h"
 

@@ -3,6 +3,7 @@
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
+#include <glslang/build_info.h>
 
 #include <fstream>
 #include <memory>
@@ -78,6 +79,13 @@ std::vector<std::uint32_t> compileComputeShader(const std::string& mainFile,
     std::string log = logger.getAllMessages();
     if (spirv.empty()) throw ShaderCompileError("SPIR-V generation failed:\n" + log);
     return spirv;
+}
+
+// Bump the "v" when the settings of compileComputeShader above change.
+std::string shaderCompilerRecipe() {
+    return "glslang " + std::to_string(GLSLANG_VERSION_MAJOR) + "." +
+           std::to_string(GLSLANG_VERSION_MINOR) + "." + std::to_string(GLSLANG_VERSION_PATCH) +
+           "; vulkan1.2 spv1.5 optimized; v1";
 }
 
 ShaderSourceLoader directoryShaderLoader(const std::filesystem::path& directory) {

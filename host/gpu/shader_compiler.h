@@ -25,6 +25,11 @@ std::vector<std::uint32_t> compileComputeShader(const std::string& mainFile,
                                                 const ShaderSourceLoader& load,
                                                 const std::string& preamble = {});
 
+// The compiler and how compileComputeShader calls it ("glslang X.Y.Z; vulkan1.2 spv1.5
+// optimized; v1"): part of the key of cached SPIR-V, so a new glslang or new settings never
+// reuse an old compile.
+std::string shaderCompilerRecipe();
+
 // A loader over the files of a folder (--shader-dir): "shade.glsl" is DIR/shade.glsl.
 // Read afresh on every call, so a recompile sees the files as they are now.
 ShaderSourceLoader directoryShaderLoader(const std::filesystem::path& directory);

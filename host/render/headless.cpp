@@ -16,22 +16,6 @@ double millisecondsSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// The last submission of a frame also copies the image to the readback buffer.
-void recordReadback(const HeadlessTarget& target, const Renderer& renderer) {
-    const Image& output = renderer.outputImage;
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {output.width, output.height, 1};
-    vkCmdCopyImageToBuffer(target.commands, output.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           target.readbackBuffer.buffer, 1, &region);
-    // Make the copied bytes visible to the host's reads after the fence.
-    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    vkCmdPipelineBarrier(target.commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
-}
-
 // Submits the recorded command buffer and waits for it; returns submit to fence in ms.
 double submitAndTime(HeadlessTarget& target, const Context& context) {
     VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
@@ -46,6 +30,29 @@ double submitAndTime(HeadlessTarget& target, const Context& context) {
 }
 
 } // namespace
+
+void recordCopyToHost(VkCommandBuffer commands, const Image& image, const Buffer& hostBuffer) {
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {image.width, image.height, 1};
+    vkCmdCopyImageToBuffer(commands, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           hostBuffer.buffer, 1, &region);
+    // Make the copied bytes visible to the host's reads after the fence.
+    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                         &toHost, 0, nullptr, 0, nullptr);
+}
+
+Image8 imageFromHostCopy(const Image& image, const Buffer& hostBuffer) {
+    Image8 pixels;
+    pixels.width = static_cast<int>(image.width);
+    pixels.height = static_cast<int>(image.height);
+    pixels.rgba.resize(std::size_t(pixels.width) * pixels.height * 4);
+    std::memcpy(pixels.rgba.data(), hostBuffer.mapped, pixels.rgba.size());
+    return pixels;
+}
 
 void createHeadlessTarget(HeadlessTarget& target, const Context& context, const Renderer& renderer,
                           std::uint32_t fixedRegionSide) {
@@ -94,7 +101,8 @@ FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context,
         const bool last = frameCovered(target.planner);
         if (last) {
             recordTraceEnd(renderer, target.commands);
-            recordReadback(target, renderer);
+            // The last submission of a frame also copies the image to the readback buffer.
+            recordCopyToHost(target.commands, renderer.outputImage, target.readbackBuffer);
         }
         VK_CHECK(vkEndCommandBuffer(target.commands));
 
@@ -112,12 +120,7 @@ FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context,
 }
 
 Image8 readHeadlessImage(const HeadlessTarget& target, const Renderer& renderer) {
-    Image8 image;
-    image.width = static_cast<int>(renderer.outputImage.width);
-    image.height = static_cast<int>(renderer.outputImage.height);
-    image.rgba.resize(std::size_t(image.width) * image.height * 4);
-    std::memcpy(image.rgba.data(), target.readbackBuffer.mapped, image.rgba.size());
-    return image;
+    return imageFromHostCopy(renderer.outputImage, target.readbackBuffer);
 }
 
 void destroyHeadlessTarget(HeadlessTarget& target, const Context& context) {

@@ -35,4 +35,11 @@ FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context,
 // The last rendered frame as an image.
 Image8 readHeadlessImage(const HeadlessTarget& target, const Renderer& renderer);
 
+// Records the copy of image (in TRANSFER_SRC_OPTIMAL) into a host buffer of its size, and
+// the barrier that makes it visible to the host once the submission's fence is signalled.
+void recordCopyToHost(VkCommandBuffer commands, const Image& image, const Buffer& hostBuffer);
+
+// The RGBA8 pixels of image as recordCopyToHost left them in hostBuffer.
+Image8 imageFromHostCopy(const Image& image, const Buffer& hostBuffer);
+
 void destroyHeadlessTarget(HeadlessTarget& target, const Context& context);

@@ -106,6 +106,7 @@ TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderS
         specialization.bakedSphereCount = static_cast<std::uint32_t>(packed.spheres.size());
         specialization.bakedLightCount = static_cast<std::uint32_t>(packed.lights.size());
     }
+    specialization.texelReads = !settings.storageReads;
     applyKernelChoices(specialization, settings.kernel);
     return specialization;
 }
@@ -121,8 +122,9 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
     PackedScene packed = packScene(scene, settings.acceleration, precision);
     std::fprintf(stderr, "%s\n", accelerationSummary(packed.hierarchy).c_str());
     renderer.specialization = traceSpecialization(packed, settings);
-    renderer.scene = uploadScene(context, packed, !settings.storageReads);
+    renderer.scene = uploadScene(context, packed, renderer.specialization.texelReads);
     packed = PackedScene{}; // the GPU holds it now
+    // The upload turns texel reads off for an array beyond maxTexelBufferElements.
     renderer.specialization.texelReads = renderer.scene.texelReads;
     if (!renderer.scene.storageReadsNote.empty())
         std::fprintf(stderr, "%s\n", renderer.scene.storageReadsNote.c_str());

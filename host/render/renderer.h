@@ -70,7 +70,8 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
                     const RenderSettings& settings);
 
 // The specialization constants for this packed scene and these settings: its primitive
-// kinds, hierarchy, whether any material has ks > 0, and the method choices. With
+// kinds, hierarchy, whether any material has ks > 0, the method choices, and texel reads
+// unless --storage-reads (createRenderer turns them off where the device's limit does). With
 // settings.generalKernel the scene's content is ignored (everything on); the rest stays.
 TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderSettings& settings);
 

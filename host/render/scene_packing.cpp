@@ -214,47 +214,40 @@ std::uint32_t vertexMaterial(const PackedScene& packed, std::size_t v) {
     return std::bit_cast<std::uint32_t>(packed.vertexPositions.at(v).w);
 }
 
-// The fp64 boxes: the same margins, computed in double and rounded outward.
-PrimitiveBounds primitiveBounds64(const PackedScene& packed) {
+namespace {
+
+// The boxes of the given spheres and triangle corners, float (fp32) or double (fp64): the
+// same margins in both, computed in double; a float box is rounded to nearest (the margin
+// covers it), a double one outward to float (appendBox).
+template <typename Vec4>
+PrimitiveBounds boundsOf(const std::vector<Vec4>& spheres, const std::vector<Vec4>& positions,
+                         const std::vector<std::uint32_t>& triangleVertices) {
+    using Vec3 = glm::vec<3, typename Vec4::value_type>;
     PrimitiveBounds bounds;
-    bounds.sphereCount = std::uint32_t(packed.spheres64.size());
-    bounds.boxes.reserve(6 * (packed.spheres64.size() + packed.triangleVertices.size() / 3));
-    for (const glm::dvec4& sphere : packed.spheres64) {
+    bounds.sphereCount = std::uint32_t(spheres.size());
+    bounds.boxes.reserve(6 * (spheres.size() + triangleVertices.size() / 3));
+    for (const Vec4& sphere : spheres) {
         glm::dvec3 center(sphere);
         double magnitude =
             std::max({std::abs(center.x), std::abs(center.y), std::abs(center.z)}) + sphere.w;
-        double reach = sphere.w + kSphereBoxMargin * magnitude;
-        appendBox(bounds.boxes, center - reach, center + reach);
+        double reach = double(sphere.w) + kSphereBoxMargin * magnitude;
+        appendBox(bounds.boxes, Vec3(center - reach), Vec3(center + reach));
     }
-    for (std::size_t i = 0; i + 2 < packed.triangleVertices.size(); i += 3) {
-        glm::dvec3 a(packed.vertexPositions64[packed.triangleVertices[i]]);
-        glm::dvec3 b(packed.vertexPositions64[packed.triangleVertices[i + 1]]);
-        glm::dvec3 c(packed.vertexPositions64[packed.triangleVertices[i + 2]]);
+    for (std::size_t i = 0; i + 2 < triangleVertices.size(); i += 3) {
+        Vec3 a(positions[triangleVertices[i]]);
+        Vec3 b(positions[triangleVertices[i + 1]]);
+        Vec3 c(positions[triangleVertices[i + 2]]);
         appendBox(bounds.boxes, glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c)));
     }
     return bounds;
 }
 
+} // namespace
+
 PrimitiveBounds primitiveBounds(const PackedScene& packed) {
     if (!packed.spheres64.empty() || !packed.vertexPositions64.empty())
-        return primitiveBounds64(packed);
-    PrimitiveBounds bounds;
-    bounds.sphereCount = std::uint32_t(packed.spheres.size());
-    bounds.boxes.reserve(6 * (packed.spheres.size() + packed.triangleVertices.size() / 3));
-    for (const glm::vec4& sphere : packed.spheres) {
-        glm::dvec3 center(sphere);
-        double magnitude =
-            std::max({std::abs(center.x), std::abs(center.y), std::abs(center.z)}) + sphere.w;
-        double reach = double(sphere.w) + kSphereBoxMargin * magnitude;
-        appendBox(bounds.boxes, glm::vec3(center - reach), glm::vec3(center + reach));
-    }
-    for (std::size_t i = 0; i + 2 < packed.triangleVertices.size(); i += 3) {
-        glm::vec3 a(packed.vertexPositions[packed.triangleVertices[i]]);
-        glm::vec3 b(packed.vertexPositions[packed.triangleVertices[i + 1]]);
-        glm::vec3 c(packed.vertexPositions[packed.triangleVertices[i + 2]]);
-        appendBox(bounds.boxes, glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c)));
-    }
-    return bounds;
+        return boundsOf(packed.spheres64, packed.vertexPositions64, packed.triangleVertices);
+    return boundsOf(packed.spheres, packed.vertexPositions, packed.triangleVertices);
 }
 
 void applyLeafOrder(PackedScene& packed, const Bvh& bvh) {

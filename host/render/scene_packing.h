@@ -6,7 +6,7 @@
 
 #include "render/bvh.h"
 #include "render/kernel_choices.h"
-#include "scene/scene_loader.h"
+#include "scene/scene.h"
 #include "shared.h"
 
 #include <cstddef>

@@ -27,7 +27,6 @@ ArrayView view(std::uint32_t binding, const char* name, const std::vector<T>& va
 struct TexelView {
     std::uint32_t binding;
     std::uint32_t source;
-    const char* name;
     VkFormat format;
     VkDeviceSize texelBytes;
     bool doublesInFp64; // read from its storage binding in fp64 (shaders/scene_reads.glsl)
@@ -36,19 +35,14 @@ struct TexelView {
 // The arrays the kernel reads inside loops (shaders/scene_reads.glsl). R32G32B32A32 and R32
 // formats are ones every Vulkan device supports for uniform texel buffers.
 constexpr TexelView kTexelViews[] = {
-    {BINDING_SPHERE_TEXELS, BINDING_SPHERES, "spheres", VK_FORMAT_R32G32B32A32_SFLOAT, 16, true},
-    {BINDING_TRIANGLE_TEXELS, BINDING_TRIANGLES, "triangles", VK_FORMAT_R32_UINT, 4, false},
-    {BINDING_POSITION_TEXELS, BINDING_VERTEX_POSITIONS, "vertex positions",
-     VK_FORMAT_R32G32B32A32_SFLOAT, 16, true},
-    {BINDING_BVH_NODE_TEXELS, BINDING_BVH_NODES, "hierarchy nodes", VK_FORMAT_R32G32B32A32_SFLOAT,
-     16, false},
-    {BINDING_NORMAL_TEXELS, BINDING_VERTEX_NORMALS, "vertex normals", VK_FORMAT_R32_SFLOAT, 4,
-     false},
-    {BINDING_MATERIAL_TEXELS, BINDING_MATERIALS, "materials", VK_FORMAT_R32G32B32A32_SFLOAT, 16,
-     false},
-    {BINDING_SPHERE_MATERIAL_TEXELS, BINDING_SPHERE_MATERIALS, "sphere materials",
-     VK_FORMAT_R32_UINT, 4, false},
-    {BINDING_LIGHT_TEXELS, BINDING_LIGHTS, "lights", VK_FORMAT_R32G32B32A32_SFLOAT, 16, false},
+    {BINDING_SPHERE_TEXELS, BINDING_SPHERES, VK_FORMAT_R32G32B32A32_SFLOAT, 16, true},
+    {BINDING_TRIANGLE_TEXELS, BINDING_TRIANGLES, VK_FORMAT_R32_UINT, 4, false},
+    {BINDING_POSITION_TEXELS, BINDING_VERTEX_POSITIONS, VK_FORMAT_R32G32B32A32_SFLOAT, 16, true},
+    {BINDING_BVH_NODE_TEXELS, BINDING_BVH_NODES, VK_FORMAT_R32G32B32A32_SFLOAT, 16, false},
+    {BINDING_NORMAL_TEXELS, BINDING_VERTEX_NORMALS, VK_FORMAT_R32_SFLOAT, 4, false},
+    {BINDING_MATERIAL_TEXELS, BINDING_MATERIALS, VK_FORMAT_R32G32B32A32_SFLOAT, 16, false},
+    {BINDING_SPHERE_MATERIAL_TEXELS, BINDING_SPHERE_MATERIALS, VK_FORMAT_R32_UINT, 4, false},
+    {BINDING_LIGHT_TEXELS, BINDING_LIGHTS, VK_FORMAT_R32G32B32A32_SFLOAT, 16, false},
 };
 static_assert(std::size(kTexelViews) == BINDING_COUNT - BINDING_FIRST_TEXEL_BUFFER);
 
@@ -86,7 +80,9 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
     OnFailure release([&] { destroyGpuScene(context, scene); });
     VkDeviceSize size = alignment;
     VkDeviceSize offsets[BINDING_COUNT]{};
+    const char* names[BINDING_COUNT]{}; // each array's name in messages, by storage binding
     for (const ArrayView& array : arrays) {
+        names[array.binding] = array.name;
         if (array.bytes > maxRange)
             throw std::runtime_error(
                 std::string("the scene's ") + array.name + " take " + std::to_string(array.bytes) +
@@ -115,8 +111,8 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
         const VkDeviceSize texels = scene.ranges[view.source].range / view.texelBytes;
         if (scene.texelReads && viewed(view) && texels > limits.maxTexelBufferElements) {
             scene.texelReads = false;
-            scene.storageReadsNote = std::string("Storage-buffer reads: the scene's ") + view.name +
-                                     " take " + std::to_string(texels) +
+            scene.storageReadsNote = std::string("Storage-buffer reads: the scene's ") +
+                                     names[view.source] + " take " + std::to_string(texels) +
                                      " texels, more than this device's maxTexelBufferElements "
                                      "of " +
                                      std::to_string(limits.maxTexelBufferElements);
@@ -137,7 +133,6 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
     scene.sphereCount = static_cast<std::uint32_t>(packed.spheres.size());
     scene.triangleCount = static_cast<std::uint32_t>(packed.triangleVertices.size() / 3);
     scene.lightCount = static_cast<std::uint32_t>(packed.lights.size());
-    scene.bvhNodeCount = static_cast<std::uint32_t>(packed.bvhNodes.size());
     scene.ambient = packed.ambient;
     return scene;
 }

@@ -14,7 +14,6 @@ struct GpuScene {
     std::uint32_t sphereCount = 0;
     std::uint32_t triangleCount = 0;
     std::uint32_t lightCount = 0;
-    std::uint32_t bvhNodeCount = 0; // 0: no hierarchy
     glm::vec4 ambient{0.0f};
     // Uniform texel buffer views for BINDING_FIRST_TEXEL_BUFFER on, always valid: over the
     // hot arrays when texelReads, else over the zeroed slot (the kernel then never reads them).

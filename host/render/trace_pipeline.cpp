@@ -1,14 +1,12 @@
 #include "render/trace_pipeline.h"
 
+#include "base/hash.h"
 #include "base/scope_guard.h"
-#include "gpu/cache_file.h"
 #include "gpu/pipeline_cache.h"
 #include "gpu/shader_compiler.h"
 #include "gpu/vk_check.h"
 #include "render/kernel_sources.h"
 #include "shared.h"
-
-#include <glslang/build_info.h>
 
 #include <cstddef>
 #include <iterator>
@@ -35,14 +33,11 @@ void applyKernelChoices(TraceSpecialization& specialization, const KernelChoices
     specialization.rayOffset = static_cast<std::uint32_t>(choices.offset);
 }
 
-// Everything that decides the SPIR-V: the compiler's version, how it is called (bump
-// the recipe when shader_compiler.cpp's settings change), the preamble that selects
-// the precision, and every embedded source.
+// Everything that decides the SPIR-V: the compiler and its settings, the preamble that
+// selects the precision, and every embedded source.
 std::uint64_t traceSourceKey(Precision precision) {
     const std::string recipe =
-        "trace.comp; glslang " + std::to_string(GLSLANG_VERSION_MAJOR) + "." +
-        std::to_string(GLSLANG_VERSION_MINOR) + "." + std::to_string(GLSLANG_VERSION_PATCH) +
-        "; vulkan1.2 spv1.5 optimized; v1; preamble: " + precisionPreamble(precision);
+        "trace.comp; " + shaderCompilerRecipe() + "; preamble: " + precisionPreamble(precision);
     std::uint64_t key = hashBytes(recipe.data(), recipe.size());
     for (const auto& [name, text] : embeddedShaderSources()) {
         key = hashBytes(name.data(), name.size() + 1,

@@ -1,6 +1,6 @@
 // The window's keys and mouse: each GLFW callback finds the Viewer through the window's
 // user pointer and turns the input into a camera move, a reload, a screenshot request or
-// a vsync toggle. The camera math itself is in camera_controller.cpp (no GLFW there).
+// a vsync toggle. The camera math itself is in scene/camera.cpp (no GLFW there).
 // host/cli/window_keys.h describes these keys and gestures to the user; a test checks that
 // the keys named here are exactly the ones it lists.
 #include "window/input.h"

@@ -2,8 +2,7 @@
 
 #include "base/scope_guard.h"
 #include "gpu/vk_check.h"
-
-#include <cstring>
+#include "render/headless.h"
 
 Image8 readOutputImage(const Context& context, const Renderer& renderer) {
     VK_CHECK(vkDeviceWaitIdle(context.device));
@@ -11,24 +10,9 @@ Image8 readOutputImage(const Context& context, const Renderer& renderer) {
     Buffer readback = createHostBuffer(context, VkDeviceSize(output.width) * output.height * 4,
                                        VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     ScopeExit release([&] { destroyBuffer(context, readback); });
-    runOneTimeCommands(context, [&](VkCommandBuffer commands) {
-        VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {output.width, output.height, 1};
-        vkCmdCopyImageToBuffer(commands, output.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                               readback.buffer, 1, &region);
-        VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-        toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-        toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-        vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT,
-                             0, 1, &toHost, 0, nullptr, 0, nullptr);
-    });
-    Image8 image;
-    image.width = int(output.width);
-    image.height = int(output.height);
-    image.rgba.resize(std::size_t(image.width) * image.height * 4);
-    std::memcpy(image.rgba.data(), readback.mapped, image.rgba.size());
-    return image;
+    runOneTimeCommands(
+        context, [&](VkCommandBuffer commands) { recordCopyToHost(commands, output, readback); });
+    return imageFromHostCopy(output, readback);
 }
 
 std::filesystem::path nextScreenshotPath(const std::filesystem::path& folder,

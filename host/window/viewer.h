@@ -1,6 +1,6 @@
 // The interactive window's state, shared by the files that make it up: window.cpp (open,
-// frame loop, close), window_input.cpp (keys and mouse), window_present.cpp (trace, blit,
-// present), window_reload.cpp (hot reload) and window_capture.cpp (screenshot, bench).
+// frame loop, close), input.cpp (keys and mouse), present.cpp (trace, blit,
+// present), reload.cpp (hot reload) and capture.cpp (screenshot, bench).
 // Internal to the window: nothing outside those files includes it.
 #pragma once
 

@@ -5,8 +5,8 @@
 // with nothing left to do sleeps in glfwWaitEventsTimeout, waking to poll the files.
 //
 // This file opens the window and its Vulkan objects, runs the frame loop and closes it
-// all again. The loop's pieces: window_input (keys, mouse), window_present (trace, blit,
-// present), window_reload (hot reload), window_capture (screenshot, --bench-window);
+// all again. The loop's pieces: input (keys, mouse), present (trace, blit,
+// present), reload (hot reload), capture (screenshot, --bench-window);
 // viewer.h holds the state they share.
 #include "window/window.h"
 

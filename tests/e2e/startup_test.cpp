@@ -5,6 +5,7 @@
 // one shared folder so that lavapipe does not recompile its code for every fresh home.
 #include "test_support.h"
 
+#include "base/hash.h"
 #include "gpu/cache_file.h"
 #include "gpu/pipeline_cache.h"
 

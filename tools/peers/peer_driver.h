@@ -1,6 +1,6 @@
 // The command line, timing and JSON report shared by the CPU peers, so that both take
-// Raytracer's flags and print the line of `Raytracer --bench` (docs/model.md) that tools/bench
-// reads:
+// Raytracer's flags and print the line of `Raytracer --bench` (docs/performance.md) that
+// tools/bench reads:
 //   PEER SCENE [-o OUT.png] [--bench N] [--width W] [--height H] [--depth D] [--spp N]
 //        [--threads T]
 #pragma once
