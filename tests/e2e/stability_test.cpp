@@ -210,7 +210,6 @@ TEST_P(Stability, DefaultsNeverFailAndNaiveMethodsFailWhereExpected) {
     std::ofstream csv(csvPath);
     csv << "scene,family,parameter,value,precision,sphere_test,triangle_test,offset,pixels,"
            "differing,wrong,failure_rate\n";
-    bool keep = false;
     for (const Choices& choices : combinations(stress, precision)) {
         const std::filesystem::path png = dir / (label(choices) + ".png");
         std::vector<std::string> args = {scenePath.string(),
@@ -269,13 +268,9 @@ TEST_P(Stability, DefaultsNeverFailAndNaiveMethodsFailWhereExpected) {
                 << label(choices) << " was expected to fail on " << stress.stem()
                 << " (the scene is designed for it) but has " << count.wrong << " wrong pixels";
         }
-        const bool surprising = (isDefault && count.wrong != 0 && precision == "fp64") ||
-                                (mustFail && count.failureRate < kMustFailRate);
-        if (surprising || count.wrong != 0) {
+        if (count.wrong != 0)
             writePng(dir / (label(choices) + "-wrong.png"),
                      wrongPixelImage(image, range, kTolerance));
-            keep = keep || surprising;
-        }
     }
     // Every must_fail pattern has to name a combination this test renders.
     for (const Choices& pattern : stress.mustFail) {
@@ -285,7 +280,7 @@ TEST_P(Stability, DefaultsNeverFailAndNaiveMethodsFailWhereExpected) {
             rendered = rendered || matches(choices, pattern);
         EXPECT_TRUE(rendered) << "index.txt names a must_fail combination that is not rendered";
     }
-    if (keep || HasFailure()) {
+    if (HasFailure()) {
         writePng(dir / "reference.png", range.centre());
         std::printf("images kept in %s\n", dir.c_str());
     } else {
