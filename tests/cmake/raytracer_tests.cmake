@@ -21,9 +21,6 @@ function(raytracer_gtest name kind)
         set(discovery_mode PRE_TEST)
     endif()
     add_executable(${name} ${ARG_SOURCES})
-    # Every test binary is headless (only Raytracer opens a window): layering_check reads
-    # this list, so a new test is checked without being named twice.
-    set_property(GLOBAL APPEND PROPERTY RAYTRACER_TEST_BINARIES ${name})
     target_link_libraries(${name} PRIVATE ${ARG_LIBRARIES} GTest::gtest_main project_warnings)
     target_compile_definitions(${name} PRIVATE ${TEST_PATH_DEFINITIONS})
     gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 DISCOVERY_MODE ${discovery_mode}

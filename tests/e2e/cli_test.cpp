@@ -9,7 +9,6 @@
 #include <chrono>
 #include <csignal>
 #include <fstream>
-#include <iterator>
 #include <thread>
 
 namespace {
@@ -151,19 +150,14 @@ TEST(CommandLine, ThreadsSetsTheCpuDriversWorkerCount) {
     std::filesystem::path dir = freshOutputDir("cli/threads");
     for (int threads : {1, 3}) {
         int seen = -1;
-        ProcessResult run = runRaytracerWhile(
-            {std::string(PROJECT_SCENES_DIR) + "/mesh.scene", "-o", (dir / "out.png").string(),
-             "--width", "2048", "--height", "2048", "--spp", "4", "--threads",
-             std::to_string(threads)},
-            [&](pid_t pid, const std::filesystem::path& errPath) {
+        std::vector<std::string> args = {std::string(PROJECT_SCENES_DIR) + "/mesh.scene", "-o",
+                                         (dir / "out.png").string()};
+        args.insert(args.end(), {"--width", "2048", "--height", "2048", "--spp", "4", "--threads",
+                                 std::to_string(threads)});
+        ProcessResult run =
+            runRaytracerWhile(args, [&](pid_t pid, const std::filesystem::path& errPath) {
                 // Once the device is chosen and the first submission runs, the workers exist.
-                const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-                while (std::chrono::steady_clock::now() < deadline) {
-                    std::ifstream err(errPath);
-                    const std::string text{std::istreambuf_iterator<char>(err), {}};
-                    if (text.find("Scene memory:") != std::string::npos) break;
-                    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-                }
+                waitForText(errPath, "Scene memory:");
                 std::this_thread::sleep_for(std::chrono::milliseconds(500));
                 seen = cpuDriverThreads(pid);
                 kill(pid, SIGTERM);
@@ -213,7 +207,7 @@ TEST(CommandLine, BenchPrintsOneJsonLineWithEveryKey) {
     ProcessResult run = runRaytracer(
         {scene.string(), "--bench", "3", "--width", "64", "--height", "48", "--validate"});
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    std::string json = run.out.substr(run.out.rfind('{'));
+    std::string json = benchJson(run);
     for (const char* key : {"\"scene\"",
                             "\"width\": 64",
                             "\"height\": 48",
@@ -262,7 +256,7 @@ TEST(CommandLine, BenchReportsTheKernelChoices) {
                                       "--offset",
                                       "fixed"});
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    std::string json = run.out.substr(run.out.rfind('{'));
+    std::string json = benchJson(run);
     for (const char* key :
          {"\"sampler\": \"grid\"", "\"seed\": 7", "\"precision\": \"fp64\"",
           "\"sphere_test\": \"naive\"", "\"triangle_test\": \"mt\"", "\"offset\": \"fixed\""})
@@ -350,11 +344,6 @@ TEST(CommandLine, GridSamplerMatchesTheReferenceGrid) {
     EXPECT_GE(comparison.fractionWithinTolerance, 0.995);
 }
 
-std::string fileBytes(const std::filesystem::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
-
 // The most primitives the brute-force path takes, with baked spheres
 // (shaders/baked_spheres.glsl): 7 mirror spheres and 8 triangles, and 4 lights.
 std::string largestBakedScene() {
@@ -402,7 +391,7 @@ TEST(CommandLine, GeneralKernelGivesTheSameBytes) {
             if (general) args.push_back("--general-kernel");
             ProcessResult run = runRaytracer(args);
             ASSERT_EQ(run.exitCode, 0) << run.err;
-            bytes[general] = fileBytes(png);
+            bytes[general] = readWholeFile(png);
         }
         EXPECT_FALSE(bytes[0].empty());
         EXPECT_EQ(bytes[0], bytes[1]) << name << ": the general kernel changed the image";
@@ -414,7 +403,7 @@ TEST(CommandLine, GeneralKernelGivesTheSameBytes) {
             if (general) args.push_back("--general-kernel");
             ProcessResult run = runRaytracer(args);
             ASSERT_EQ(run.exitCode, 0) << run.err;
-            const std::string json = run.out.substr(run.out.rfind('{'));
+            const std::string json = benchJson(run);
             const std::string specialised = name == "matte"   ? "[\"highlight\", \"mirrors\"]"
                                             : name == "shiny" ? "[\"triangles\"]"
                                                               : "[]";

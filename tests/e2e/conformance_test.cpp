@@ -344,6 +344,7 @@ TEST(Culling, GeometryInAPlaneThroughTheEyeCostsNoMoreThanOffIt) {
     writeTextFile(onPlane, trianglesInAPlane(0.0, 2000));
     writeTextFile(offPlane, trianglesInAPlane(0.001, 2000));
     double on = fastestFrameMs(onPlane), off = fastestFrameMs(offPlane);
+    if (testing::Test::HasFailure()) return; // a failed run has no time to compare
     std::printf("culling: %.2f ms a frame in the plane through the eye, %.2f ms off it\n", on, off);
     EXPECT_LT(on, 2.0 * off) << "boxes with a face through the eye are not culled";
 }

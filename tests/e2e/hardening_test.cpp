@@ -13,8 +13,6 @@
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 #include <thread>
 
 namespace {
@@ -32,11 +30,6 @@ std::filesystem::path writeScene(const std::filesystem::path& dir) {
     return path;
 }
 
-std::string fileBytes(const std::filesystem::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
-
 bool contains(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
 }
@@ -47,7 +40,7 @@ std::string writeGoodPng(const std::filesystem::path& path) {
     image.width = image.height = 4;
     image.rgba.assign(4 * 4 * 4, 200);
     writePng(path, image);
-    return fileBytes(path);
+    return readWholeFile(path);
 }
 
 // Sets an environment variable for one scope.
@@ -262,14 +255,14 @@ TEST(NothingLost, AFailedRunLeavesAnExistingPngAsItWas) {
     ProcessResult blocked = runRaytracer({scene.string(), "-o", output.string()});
     EXPECT_EQ(blocked.exitCode, 1) << blocked.err;
     EXPECT_TRUE(contains(blocked.err, "cannot create " + output.string() + ".tmp")) << blocked.err;
-    EXPECT_EQ(fileBytes(output), good);
+    EXPECT_EQ(readWholeFile(output), good);
     std::filesystem::remove(dir / "out.png.tmp");
 
     // A failure after the output was reserved (no such device) removes the reservation.
     ProcessResult noDevice =
         runRaytracer({scene.string(), "-o", output.string(), "--device", "no-such-gpu"});
     EXPECT_EQ(noDevice.exitCode, 1) << noDevice.err;
-    EXPECT_EQ(fileBytes(output), good);
+    EXPECT_EQ(readWholeFile(output), good);
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png.tmp"));
 
     // And a good run replaces it.
@@ -310,9 +303,7 @@ void expectSignalEndsALongRenderCleanly(int signalNumber, const std::string& nam
         [&](pid_t pid, const std::filesystem::path& errPath) {
             // Wait until the device is chosen (the handlers are installed by then), then
             // a little longer, so that submissions are running.
-            const Clock::time_point deadline = Clock::now() + std::chrono::seconds(120);
-            while (!contains(fileBytes(errPath), "Device:") && Clock::now() < deadline)
-                std::this_thread::sleep_for(std::chrono::milliseconds(20));
+            waitForText(errPath, "Device:");
             std::this_thread::sleep_for(std::chrono::seconds(1));
             sent = Clock::now();
             signalled = kill(pid, signalNumber) == 0;
@@ -323,7 +314,7 @@ void expectSignalEndsALongRenderCleanly(int signalNumber, const std::string& nam
     EXPECT_EQ(run.exitCode, 128 + signalNumber) << run.err;
     EXPECT_TRUE(contains(run.err, "note: interrupted by " + name)) << run.err;
     EXPECT_LT(secondsToExit, 10.0) << "the render did not stop soon after the signal";
-    EXPECT_EQ(fileBytes(output), good) << "the existing PNG was changed";
+    EXPECT_EQ(readWholeFile(output), good) << "the existing PNG was changed";
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png.tmp"));
     std::printf("%s: exited %.2f s after the signal\n", name.c_str(), secondsToExit);
 }

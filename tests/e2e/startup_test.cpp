@@ -22,11 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string readBytes(const fs::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
-
 void writeBytes(const fs::path& path, const std::string& bytes) {
     std::ofstream file(path, std::ios::binary | std::ios::trunc);
     file << bytes;
@@ -77,7 +72,7 @@ class StartupCache : public testing::Test {
         return runRaytracer(args);
     }
 
-    std::string png(const std::string& name) { return readBytes(dir_ / (name + ".png")); }
+    std::string png(const std::string& name) { return readWholeFile(dir_ / (name + ".png")); }
 
     // A cache folder filled by one run, and the image of a run without any cache.
     fs::path filledCache() {
@@ -150,7 +145,7 @@ TEST_F(StartupCache, DamagedFilesAreIgnoredWithANoteAndRebuilt) {
         fs::copy(good, home / "raytracer");
         std::vector<fs::path> files = filesIn(home / "raytracer");
         for (const fs::path& file : files)
-            writeBytes(file, damage(readBytes(file)));
+            writeBytes(file, damage(readWholeFile(file)));
 
         ProcessResult run = render(home, name);
         ASSERT_EQ(run.exitCode, 0) << run.err;
@@ -179,7 +174,7 @@ TEST_F(StartupCache, PipelineCacheOfAnotherDeviceIsIgnoredWithANote) {
         fs::copy(good, home / "raytracer");
         fs::path file = filesIn(home / "raytracer")[0];
         ASSERT_EQ(file.filename().string().rfind("pipeline-", 0), 0u);
-        std::string bytes = readBytes(file);
+        std::string bytes = readWholeFile(file);
         CacheFileHeader header;
         ASSERT_GE(bytes.size(), sizeof header + sizeof(VkPipelineCacheHeaderVersionOne));
         std::memcpy(&header, bytes.data(), sizeof header);
@@ -328,7 +323,7 @@ TEST(CacheFile, DamageIsNamed) {
         EXPECT_FALSE(readCacheFile(damaged, kind, key, why).has_value());
         return why;
     };
-    const std::string whole = readBytes(file);
+    const std::string whole = readWholeFile(file);
     EXPECT_EQ(problemWith(""), "the file is empty");
     EXPECT_EQ(problemWith("PNG\r\n and more bytes than a header holds, surely more"),
               "not a Raytracer cache file");

@@ -8,9 +8,6 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <iterator>
-
 namespace {
 
 // Spheres and triangles in one scene, so that leaves of both kinds are read.
@@ -31,15 +28,10 @@ std::string mixedScene() {
     return std::to_string(1 + 6 * 2) + "\n" + text;
 }
 
-std::string fileBytes(const std::filesystem::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
-
-std::string benchJson(const std::vector<std::string>& args) {
+std::string runBench(const std::vector<std::string>& args) {
     ProcessResult run = runRaytracer(args);
     EXPECT_EQ(run.exitCode, 0) << run.err;
-    return run.out.substr(run.out.rfind('{'));
+    return benchJson(run);
 }
 
 TEST(TexelReads, StorageReadsGiveTheSameBytes) {
@@ -58,7 +50,7 @@ TEST(TexelReads, StorageReadsGiveTheSameBytes) {
                 if (storage) args.push_back("--storage-reads");
                 ProcessResult run = runRaytracer(args);
                 ASSERT_EQ(run.exitCode, 0) << run.err;
-                bytes[storage] = fileBytes(png);
+                bytes[storage] = readWholeFile(png);
             }
             EXPECT_FALSE(bytes[0].empty());
             EXPECT_EQ(bytes[0], bytes[1])
@@ -73,14 +65,14 @@ TEST(TexelReads, BenchSaysWhichPathRan) {
     writeTextFile(scene, mixedScene());
     const std::vector<std::string> bench = {scene.string(), "--bench",  "1",  "--width",
                                             "16",           "--height", "16", "--validate"};
-    EXPECT_NE(benchJson(bench).find("\"texel_reads\": true"), std::string::npos);
+    EXPECT_NE(runBench(bench).find("\"texel_reads\": true"), std::string::npos);
     std::vector<std::string> storage = bench;
     storage.push_back("--storage-reads");
-    EXPECT_NE(benchJson(storage).find("\"texel_reads\": false"), std::string::npos);
+    EXPECT_NE(runBench(storage).find("\"texel_reads\": false"), std::string::npos);
     // fp64 reads all but its doubles through texel buffers.
     std::vector<std::string> fp64 = bench;
     fp64.insert(fp64.end(), {"--precision", "fp64"});
-    EXPECT_NE(benchJson(fp64).find("\"texel_reads\": true"), std::string::npos);
+    EXPECT_NE(runBench(fp64).find("\"texel_reads\": true"), std::string::npos);
 }
 
 // An array beyond maxTexelBufferElements takes the storage path with a note naming it; a

@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 
 #include <cerrno>
-#include <fstream>
 #include <functional>
 #include <pty.h>
 #include <sys/wait.h>
@@ -155,11 +154,6 @@ TEST(RegionPlanner, FixedSideIsWholeWorkgroups) {
     EXPECT_EQ(regions[0].height, 24u);
 }
 
-std::string readBytes(const fs::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
-
 // "Rendered WxH in S s: N submissions, ..." -> N, or -1 without that line.
 long submissionsIn(const std::string& err) {
     std::size_t at = err.find("Rendered ");
@@ -183,7 +177,7 @@ TEST(Tiling, LargeImageIsTheSameWithSmallTilesAndReportsProgress) {
     ProcessResult smallRun = runRaytracer(small);
     ASSERT_EQ(smallRun.exitCode, 0) << smallRun.err;
     EXPECT_FALSE(hasValidationMessage(smallRun)) << smallRun.err;
-    EXPECT_EQ(readBytes(dir / "adaptive.png"), readBytes(dir / "small.png"));
+    EXPECT_EQ(readWholeFile(dir / "adaptive.png"), readWholeFile(dir / "small.png"));
 
     // stderr is a file here, not a terminal: one summary line, no carriage returns.
     EXPECT_NE(smallRun.err.find("Rendered 1500x1100 in "), std::string::npos) << smallRun.err;
@@ -202,7 +196,7 @@ TEST(Tiling, SamplesPerPixelAreTheSameWithSmallTiles) {
     small.insert(small.end(), {"-o", (dir / "small.png").string(), "--region-size", "16"});
     ASSERT_EQ(runRaytracer(adaptive).exitCode, 0);
     ASSERT_EQ(runRaytracer(small).exitCode, 0);
-    EXPECT_EQ(readBytes(dir / "adaptive.png"), readBytes(dir / "small.png"));
+    EXPECT_EQ(readWholeFile(dir / "adaptive.png"), readWholeFile(dir / "small.png"));
 }
 
 TEST(Tiling, AShortRenderIsQuiet) {

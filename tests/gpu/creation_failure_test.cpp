@@ -12,11 +12,11 @@
 #include "render/kernel_sources.h"
 #include "render/renderer.h"
 #include "render/trace_pipeline.h"
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <filesystem>
 #include <functional>
 
 namespace {
@@ -75,14 +75,6 @@ Scene smallScene() {
     return scene;
 }
 
-std::filesystem::path freshCacheDirectory() {
-    const std::filesystem::path directory =
-        std::filesystem::path(TEST_OUTPUT_DIR) / "creation_failure_cache";
-    std::filesystem::remove_all(directory);
-    std::filesystem::create_directories(directory);
-    return directory;
-}
-
 TEST(CreationFailure, HostBufferLeavesNothing) {
     EXPECT_GE(failEachStep([](const Context& context) {
                   Buffer buffer = createHostBuffer(context, 4096, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
@@ -120,7 +112,7 @@ TEST(CreationFailure, TracePipelineLeavesNothing) {
 }
 
 TEST(CreationFailure, CachedTracePipelineLeavesNothing) {
-    const KernelSource source{{}, freshCacheDirectory()};
+    const KernelSource source{{}, freshOutputDir("creation_failure_cache")};
     EXPECT_GE(failEachStep([&](const Context& context) {
                   TracePipeline pipeline = loadTracePipeline(context, source);
                   destroyTracePipeline(context, pipeline);

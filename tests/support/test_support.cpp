@@ -11,14 +11,14 @@
 #include <thread>
 #include <unistd.h>
 
-namespace {
-
 std::string readWholeFile(const std::filesystem::path& path) {
     std::ifstream file(path, std::ios::binary);
     std::ostringstream text;
     text << file.rdbuf();
     return text.str();
 }
+
+namespace {
 
 ProcessResult
 runRaytracerIn(const std::vector<std::string>& args, int timeoutSeconds,
@@ -91,6 +91,18 @@ runRaytracerIn(const std::vector<std::string>& args, int timeoutSeconds,
 }
 
 } // namespace
+
+std::string benchJson(const ProcessResult& run) {
+    return run.out.substr(run.out.rfind('{'));
+}
+
+void waitForText(const std::filesystem::path& file, const std::string& text,
+                 std::chrono::seconds timeout) {
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    while (readWholeFile(file).find(text) == std::string::npos &&
+           std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+}
 
 std::filesystem::path freshOutputDir(const std::string& name) {
     std::filesystem::path dir = std::filesystem::path(TEST_OUTPUT_DIR) / name;

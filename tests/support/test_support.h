@@ -6,6 +6,7 @@
 #include "image_compare.h"
 #include "reference_renderer.h"
 
+#include <chrono>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -32,11 +33,23 @@ runRaytracerWhile(const std::vector<std::string>& args,
                   const std::function<void(pid_t, const std::filesystem::path&)>& duringRun,
                   int timeoutSeconds = 300);
 
+// The JSON object that --bench prints last on stdout (from its last '{'); throws when
+// there is none.
+std::string benchJson(const ProcessResult& run);
+
+// Waits until a file holds text, or timeout passes: a running program's stderr, to act
+// once it has reached a stage that it reports.
+void waitForText(const std::filesystem::path& file, const std::string& text,
+                 std::chrono::seconds timeout = std::chrono::seconds(120));
+
 // A fresh, empty folder under the build tree for one test's files.
 std::filesystem::path freshOutputDir(const std::string& name);
 
 // The *.scene files of a folder, sorted; empty when the folder is absent.
 std::vector<std::filesystem::path> sceneFilesIn(const std::filesystem::path& folder);
+
+// The bytes of a file; empty when it cannot be read.
+std::string readWholeFile(const std::filesystem::path& path);
 
 // Writes text to a file (for scene files made by a test).
 void writeTextFile(const std::filesystem::path& path, const std::string& text);

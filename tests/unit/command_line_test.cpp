@@ -47,7 +47,7 @@ std::vector<std::string> shellWords(const std::string& command) {
 // Folders for --shader-dir whose names a shell would misread unquoted.
 std::filesystem::path shaderFolder(const std::string& name) {
     const std::filesystem::path folder =
-        std::filesystem::temp_directory_path() / "raytracer-command-line-test" / name;
+        std::filesystem::path(TEST_OUTPUT_DIR) / "command-line" / name;
     std::filesystem::create_directories(folder);
     std::ofstream(folder / "trace.comp") << "#version 460\n";
     return folder;

@@ -41,16 +41,12 @@ TEST(WindowKeys, DocsHoldTheTableBetweenTheirMarkers) {
     }
 }
 
-TEST(WindowKeys, HelpAndTheWindowLineListEveryEntry) {
+TEST(WindowKeys, HelpHoldsTheKeysAndTheWindowLineIsOneLine) {
     const std::string help = usageText(), line = windowKeysLine();
     EXPECT_NE(help.find(windowKeysHelp()), std::string::npos) << help;
-    EXPECT_EQ(line.rfind("Window: Esc or Q quits; ", 0), 0u) << line; // tests/window_test.sh
+    // tests/window/window_test.sh looks for this start of the line on stderr.
+    EXPECT_EQ(line.rfind("Window: Esc or Q quits; ", 0), 0u) << line;
     EXPECT_EQ(line.find('\n'), line.size() - 1) << line;
-    for (const WindowKey& key : kWindowKeys) {
-        const std::string sentence = std::string(key.keys) + " " + std::string(key.effect);
-        EXPECT_NE(help.find("  " + sentence + "\n"), std::string::npos) << sentence;
-        EXPECT_NE(line.find(sentence), std::string::npos) << sentence;
-    }
 }
 
 // The GLFW names of what the table lists: its keys split at " or " and "/", named as GLFW
