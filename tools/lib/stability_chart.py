@@ -13,7 +13,8 @@ without it, 1 if there is nothing to plot.
 import math
 import sys
 
-from chart_support import chart_inputs
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree for chart_support
+from chart_support import chart_inputs  # noqa: E402
 
 # (label, colour, style, wanted settings); a line is drawn only where the family varies
 # every method it names.
