@@ -27,13 +27,21 @@ if [[ $mode == fix ]]; then
     clang-format -i "${files[@]}"
     exit 0
 fi
-unformatted=()
-for file in "${files[@]}"; do
-    clang-format "$file" | cmp -s - "$file" || unformatted+=("$file")
-done
-if ((${#unformatted[@]})); then
-    echo "format.sh: ${#unformatted[@]} files differ from .clang-format (run tools/format.sh):"
-    printf '  %s\n' "${unformatted[@]}"
+# One clang-format for all the files (one per file took ten times longer). Each violation
+# is a diagnostic "FILE:LINE:COLUMN: error: code should be clang-formatted [...]", in the
+# order the files were given; the files are named once each, as a list.
+status=0
+report=$(clang-format --dry-run -Werror "${files[@]}" 2>&1) || status=$?
+if ((status == 0)); then
+    echo "format.sh: ${#files[@]} files formatted as .clang-format says"
+    exit 0
+fi
+violation='^\(.*\):[0-9]\+:[0-9]\+: error: code should be clang-formatted \[-Wclang-format-violations\]$'
+mapfile -t unformatted < <(sed -n "s/$violation/\\1/p" <<< "$report" | uniq)
+if ((${#unformatted[@]} == 0)); then
+    echo "$report" >&2  # clang-format failed for another reason: say what it said
     exit 1
 fi
-echo "format.sh: ${#files[@]} files formatted as .clang-format says"
+echo "format.sh: ${#unformatted[@]} files differ from .clang-format (run tools/format.sh):"
+printf '  %s\n' "${unformatted[@]}"
+exit 1

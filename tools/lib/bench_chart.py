@@ -9,8 +9,10 @@ Needs matplotlib (Debian: python3-matplotlib); exits 3 without it, 1 if there is
 nothing to plot.
 """
 import argparse
-import csv
 import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree for chart_support
+from chart_support import import_pyplot, read_rows  # noqa: E402
 
 STYLES = {"raytracer": ("Raytracer", "tab:red", "o"), "embree": ("Embree", "tab:blue", "s"),
           "brute_force": ("brute force", "tab:green", "^")}
@@ -22,16 +24,11 @@ def main():
     parser.add_argument("png")
     parser.add_argument("--title", default="Frame time against triangle count")
     args = parser.parse_args()
-    try:
-        import matplotlib
-        matplotlib.use("Agg")  # no display needed
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("bench_chart: matplotlib is missing (tools/build/install_deps.sh --bench)", file=sys.stderr)
+    plt = import_pyplot("bench_chart")
+    if plt is None:
         return 3
 
-    with open(args.csv, newline="") as f:
-        rows = [r for r in csv.DictReader(f) if r["status"] == "ok" and int(r["triangles"]) > 0]
+    rows = [r for r in read_rows(args.csv) if r["status"] == "ok" and int(r["triangles"]) > 0]
     fig, ax = plt.subplots(figsize=(8, 5.5))
     for renderer, (label, color, marker) in STYLES.items():
         for kind in ("mesh", "classic"):

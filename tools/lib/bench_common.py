@@ -1,5 +1,6 @@
-"""What the benchmark tools of tools/ share (tools/bench, tools/kernel_costs): where the
-scenes are, and running one `--bench` command for its JSON report."""
+"""What the measuring tools of tools/ share (tools/bench, tools/kernel_costs,
+tools/speed_accuracy, tools/stability): where the checkout and the scenes are, running one
+`--bench` command for its JSON report, and drawing a chart with a script of tools/lib."""
 import json
 import pathlib
 import subprocess
@@ -32,3 +33,22 @@ def run_bench(command, env, timeout):
         print(f"    {pathlib.Path(command[0]).name}: last line is not JSON: {lines[-1][:200]}",
               file=sys.stderr)
         return "failed", None
+
+
+def draw_chart(tool, script, csv_path, png_path, extra_args=()):
+    """Draws a chart with tools/lib/SCRIPT CSV PNG EXTRA_ARGS; False after saying why not.
+    Debian's python3-matplotlib belongs to /usr/bin/python3, which need not be the python3
+    running this tool (a pyenv or a virtual environment first on PATH), so that one is
+    tried too."""
+    result = None
+    for python in dict.fromkeys((sys.executable, "/usr/bin/python3")):
+        if not pathlib.Path(python).exists():
+            continue
+        result = subprocess.run([python, str(ROOT / "tools" / "lib" / script), str(csv_path),
+                                 str(png_path), *extra_args], capture_output=True, text=True)
+        if result.returncode == 0:
+            return True
+        if result.returncode != 3:  # 3: no matplotlib for this python, try the next
+            break
+    print(f"{tool}: no chart: {result.stderr.strip() if result else 'no python'}", file=sys.stderr)
+    return False

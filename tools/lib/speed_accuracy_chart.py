@@ -12,7 +12,8 @@ that panel's metric; the CSV's pareto column is the front on RMSE). Needs matplo
 """
 import sys
 
-from chart_support import chart_inputs
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree for chart_support
+from chart_support import chart_inputs  # noqa: E402
 
 COLOURS = {"grid": "tab:blue", "stratified": "tab:orange", "r2": "tab:green"}
 MARKERS = {"fp32": "o", "fp64": "s"}

@@ -4,16 +4,18 @@
     python3 tools/lib/stability_chart.py results.csv chart.png
 
 One panel per stress family, the family's parameter on a log x axis (distance/radius for
-far_sphere, the scene's scale otherwise), the share of wrong pixels on a symmetric-log y
-axis (0 is drawn at the bottom). One line per method: the defaults in fp32 and fp64, each
-naive method alone in fp32 (the others at their defaults), and all of the family's naive
-methods together in fp32 and fp64. Needs matplotlib (Debian: python3-matplotlib); exits 3
-without it, 1 if there is nothing to plot.
+far_sphere, the ground quad's width for ground*, the scene's scale otherwise), the share
+of wrong pixels on a symmetric-log y axis (0 is drawn at the bottom). One line per method:
+the defaults in fp32 and fp64, each naive method alone in fp32 (the others at their
+defaults), the error-bound offset in fp32, and all of the family's naive methods together
+in fp32 and fp64. Needs matplotlib (Debian: python3-matplotlib); exits 3 without it, 1 if
+there is nothing to plot.
 """
 import math
 import sys
 
-from chart_support import chart_inputs
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree for chart_support
+from chart_support import chart_inputs  # noqa: E402
 
 # (label, colour, style, wanted settings); a line is drawn only where the family varies
 # every method it names.
@@ -23,6 +25,7 @@ LINES = [
     ("naive sphere test, fp32", "tab:red", "-", {"precision": "fp32", "sphere_test": "naive"}),
     ("Moller-Trumbore, fp32", "tab:purple", "-", {"precision": "fp32", "triangle_test": "mt"}),
     ("fixed offset 1e-4, fp32", "tab:orange", "-", {"precision": "fp32", "offset": "fixed"}),
+    ("error-bound offset, fp32", "tab:blue", "-", {"precision": "fp32", "offset": "error-bound"}),
     ("all naive, fp32", "black", "--", {"precision": "fp32", "all_naive": True}),
     ("all naive, fp64", "grey", ":", {"precision": "fp64", "all_naive": True}),
 ]
@@ -31,8 +34,12 @@ NAIVE = {"sphere_test": "naive", "triangle_test": "mt", "offset": "fixed"}
 TITLES = {"far_sphere": "far sphere (radius 1)", "far_sphere_scaled": "far sphere d/r = 1e3, scaled",
           "edge_mesh": "edge-aimed closed mesh", "grazing": "grazing ground plane",
           "mirrors": "two facing mirrors", "degenerate": "zero-area / zero-normal triangles",
-          "inside_sphere": "camera inside a sphere"}
-XLABELS = {"distance_over_radius": "distance / radius", "scale": "scene scale"}
+          "inside_sphere": "camera inside a sphere",
+          "ground": "huge ground, objects of size 1", "ground_small": "huge ground, millimetre objects",
+          "ground_high": "huge ground, objects of size 10 seen from 100",
+          "ground_overhead": "huge ground, overhead light", "ground_mirror": "huge mirror ground"}
+XLABELS = {"distance_over_radius": "distance / radius", "scale": "scene scale",
+           "extent": "ground extent (the quad's width)"}
 
 
 def varied_methods(rows):
