@@ -13,15 +13,16 @@
 //   x = (2 (i + u) / W - 1) * camera.x,  y = (1 - 2 (j + v) / H) * camera.y,
 //   direction = normalize(x, y, -1)
 
-// What a ray leaves: no triangle (NO_TRIANGLE: primary rays and rays leaving a sphere), or
-// the triangle that, with --offset error-bound, its tests skip (a plane cannot be hit
-// again by a ray leaving it; ray_offset.glsl, intersectTriangle).
-const uint NO_TRIANGLE = 0xffffffffu;
+// What a ray leaves: no flat patch (NO_PATCH: primary rays and rays leaving a sphere), or
+// the flat patch of the triangle it leaves, whose triangles its tests skip with --offset
+// error-bound (a plane cannot be met again by a ray leaving it; ray_offset.glsl,
+// intersectTriangle).
+const uint NO_PATCH = 0xffffffffu;
 
 struct Ray {
     rvec3 origin;    // real: float, or double with --precision fp64 (precision.glsl)
     rvec3 direction; // unit length
-    uint leaving;    // the triangle the ray leaves, or NO_TRIANGLE
+    uint leaving;    // the flat patch the ray leaves, or NO_PATCH
 };
 
 // v rotated by the unit quaternion q (xyz vector part, w scalar part). For the identity
@@ -40,5 +41,5 @@ Ray cameraRay(uvec2 pixel, vec2 uv) {
                     1.0 - 2.0 * (float(pixel.y) + uv.y) / size.y);
     vec3 direction =
         rotateByQuaternion(params.cameraOrientation, vec3(ndc * params.camera.xy, -1.0));
-    return Ray(params.cameraOrigin.xyz, normalize(direction), NO_TRIANGLE);
+    return Ray(params.cameraOrigin.xyz, normalize(direction), NO_PATCH);
 }

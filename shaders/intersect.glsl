@@ -148,22 +148,14 @@ bool intersectTriangleMollerTrumbore(Ray ray, rvec3 a, rvec3 b, rvec3 c, real tM
     return true;
 }
 
-// The three corners of triangle i, from the index and position arrays.
-void triangleCorners(uint i, out rvec3 a, out rvec3 b, out rvec3 c) {
-    uvec3 v = fetchTriangle(i);
-    a = fetchPosition(v.x);
-    b = fetchPosition(v.y);
-    c = fetchPosition(v.z);
-}
-
 // Triangle i against the ray with the test chosen by --triangle-test (a specialization
-// constant: the other is compiled out, and so is the shear setup when unused). The
-// triangle a ray leaves is never hit by it (--offset error-bound, ray_offset.glsl).
+// constant: the other is compiled out, and so is the shear setup when unused). The flat
+// patch a ray leaves is never hit by it (--offset error-bound, ray_offset.glsl).
 bool intersectTriangle(Ray ray, ShearedRay sheared, uint i, real tMax, out real t,
                        out rvec3 barycentric) {
-    if (rayOffsetKind == RAY_OFFSET_ERROR_BOUND && i == ray.leaving) return false;
-    rvec3 a, b, c;
-    triangleCorners(i, a, b, c);
+    uvec4 v = fetchTriangle(i);
+    if (rayOffsetKind == RAY_OFFSET_ERROR_BOUND && v.w == ray.leaving) return false;
+    rvec3 a = fetchPosition(v.x), b = fetchPosition(v.y), c = fetchPosition(v.z);
     if (watertightTriangles)
         return intersectTriangleWatertight(sheared, a, b, c, tMax, t, barycentric);
     return intersectTriangleMollerTrumbore(ray, a, b, c, tMax, t, barycentric);

@@ -8,11 +8,13 @@
 // sum b_i p_i (a triangle) or c + r n (a sphere) has, per coordinate, an error below
 // gamma(7) times the sum of the absolute terms that coordinate was computed from:
 // `magnitude`, so a coordinate is moved only as far as its own arithmetic can be off, and
-// a large x beside a small y does not lift the point in y. The triangle the ray leaves is
-// skipped by its tests (Ray.leaving): a ray leaving a plane cannot meet it again, and the
-// triangle test's own error (which grows with the vertices' distance from the origin, not
-// with the point's) then cannot bring it back. A sphere needs no such skip: with the
-// origin outside (or inside) it by the bound, the stable test's roots keep their sign.
+// a large x beside a small y does not lift the point in y. The flat patch of the triangle
+// the ray leaves (its coplanar neighbours; host/render/flat_patches.h) is skipped by its
+// tests (Ray.leaving): a ray leaving a plane cannot meet it again, and the triangle test's
+// own error (which grows with the vertices' distance from the origin, not with the
+// point's) then cannot bring it back, for the triangle itself or for the other half of a
+// quad. A sphere needs no such skip: with the origin outside (or inside) it by the bound,
+// the stable test's roots keep their sign.
 //
 // scaled: Waechter & Binder, "A Fast and Robust Method for Avoiding Self-Intersection",
 // Ray Tracing Gems, ch. 6 (2019), made scale-relative: 256 ULPs of `magnitude` per
@@ -31,11 +33,18 @@ const float OFFSET_INT_SCALE = 256.0;   // scaled: 256 ULPs times n elsewhere
 // Absolute offset: s times n times the same 128 ULPs of 1 as in float (2^-16 = 128 * 2^-23),
 // now of a double: 128 * 2^-52.
 const double OFFSET_FLOAT_SCALE = 2.8421709430404007e-14LF;
-// gamma(n) = n u / (1 - n u) with the unit roundoff u = 2^-53, rounded up.
+// gamma(n) = n u / (1 - n u) with the unit roundoff u = 2^-53, rounded up: a bound on the
+// relative error of n roundings (pbrt-v4, section 6.8.1).
+const double GAMMA_3 = 3.330669073875471e-16LF;
+const double GAMMA_4 = 4.440892098500629e-16LF;
+const double GAMMA_5 = 5.551115123125787e-16LF;
 const double GAMMA_7 = 7.771561172376103e-16LF;
 #else
 const float OFFSET_FLOAT_SCALE = 1.0 / 65536.0; // absolute offset: s/65536 times n
-// gamma(7) = 7 u / (1 - 7 u) with u = 2^-24, rounded up.
+// gamma(n) = n u / (1 - n u) with u = 2^-24, rounded up.
+const float GAMMA_3 = 1.78813977e-7;
+const float GAMMA_4 = 2.38418664e-7;
+const float GAMMA_5 = 2.98023338e-7;
 const float GAMMA_7 = 4.1723284e-7;
 #endif
 // --offset fixed: the textbook epsilon, in scene units whatever the scene's scale.
@@ -93,12 +102,12 @@ vec3 stepAway(vec3 x, vec3 away) {
 #endif
 
 // Moves p off its surface along the unit geometric normal n, which must point to the side
-// the new ray leaves on, by the method --offset chose (above).
-rvec3 offsetRayOrigin(rvec3 p, rvec3 n, rvec3 magnitude) {
+// the new ray leaves on, by the method --offset chose (above): error-bound by normalError,
+// the bound on p's distance from the surface along n (shade.glsl, surfaceAt).
+rvec3 offsetRayOrigin(rvec3 p, rvec3 n, rvec3 magnitude, real normalError) {
     if (rayOffsetKind == RAY_OFFSET_FIXED) return p + FIXED_OFFSET * n;
     if (rayOffsetKind == RAY_OFFSET_ERROR_BOUND) {
-        rvec3 error = GAMMA_7 * magnitude;
-        rvec3 offset = dot(abs(n), error) * n;
+        rvec3 offset = normalError * n;
         // The sum rounds to nearest: one more ULP away from the surface keeps it there.
         return stepAway(p + offset, offset);
     }

@@ -27,15 +27,10 @@ rvec4 fetchSphere(uint i) {
     return spheres[i];
 }
 
-// The three vertex indices of triangle i.
-uvec3 fetchTriangle(uint i) {
-    if (texelReads) {
-        int first = int(3u * i);
-        return uvec3(texelFetch(triangleTexels, first).x, texelFetch(triangleTexels, first + 1).x,
-                     texelFetch(triangleTexels, first + 2).x);
-    }
-    return uvec3(triangleVertices[3u * i], triangleVertices[3u * i + 1u],
-                 triangleVertices[3u * i + 2u]);
+// Triangle i: its three vertex indices in xyz, its flat patch in w.
+uvec4 fetchTriangle(uint i) {
+    if (texelReads) return texelFetch(triangleTexels, int(i));
+    return triangles[i];
 }
 
 // The position of vertex v.

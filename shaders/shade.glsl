@@ -6,12 +6,13 @@
 struct SurfacePoint {
     rvec3 position;
     rvec3 magnitude;       // per coordinate, sum of |terms| that position was computed from
+    real normalError;      // bound on position's distance from the surface along the normal
     rvec3 geometricNormal; // unit, either side: the side a new ray leaves on picks the sign
     rvec3 normal;          // unit shading normal, flipped to face the incoming ray
     vec3 kd;               // diffuse colour
     vec3 ks;               // specular colour, also the mirror weight
     float shininess;       // Phong exponent
-    uint triangle;         // the triangle hit, or NO_TRIANGLE for a sphere
+    uint flatPatch;        // the hit triangle's flat patch, or NO_PATCH for a sphere
 };
 
 // v scaled to unit length, or fallback when v is zero (normalize(0) is NaN on lavapipe);
@@ -26,6 +27,40 @@ GpuMaterial vertexMaterial(uint v) {
     return fetchMaterial(fetchVertexMaterialIndex(v));
 }
 
+// With --offset error-bound: the hit point as the ray's own point on the triangle's plane,
+// o + t d with t = dot(n, a - o) / dot(n, d), n = cross(b - a, c - a), where that is the
+// tighter of the two. The barycentric sum's error grows with the vertices' magnitudes, this
+// one's with the eye's and t's: on a ground 1e6 across, seen from 1 unit above it, 1e5
+// times less, which keeps thin shadows where the reference has them. Each bound is pbrt-v4's
+// running error analysis (section 6.8): n carries gamma(3) of the cross product of the
+// edges' magnitudes, the dot products gamma(4) and gamma(5) of their terms' magnitudes, the
+// point gamma(3) of |o| + |t d| plus d times t's error; along the normal, t's error counts
+// only times the cosine of the incidence, (err(num) + |t| err(den)) / |n| (derived in
+// docs/accuracy.md).
+void onTrianglePlane(Ray ray, rvec3 a, rvec3 b, rvec3 c, inout SurfacePoint s) {
+    rvec3 e1 = b - a, e2 = c - a;
+    rvec3 n = cross(e1, e2);
+    real nLength = length(n);
+    real den = dot(n, ray.direction);
+    if (!(nLength > 0.0) || den == 0.0) return; // edge-on: keep the barycentric point
+    rvec3 toA = a - ray.origin;
+    real t = dot(n, toA) / den;
+    rvec3 p = ray.origin + t * ray.direction;
+    rvec3 nError = GAMMA_3 * (abs(e1.yzx * e2.zxy) + abs(e1.zxy * e2.yzx));
+    real numError = GAMMA_5 * dot(abs(n), abs(toA)) + dot(nError, abs(toA));
+    real denError = GAMMA_4 * dot(abs(n), abs(ray.direction)) + dot(nError, abs(ray.direction));
+    real tError = (numError + abs(t) * denError) / abs(den);
+    rvec3 rounding = GAMMA_3 * (abs(ray.origin) + abs(t * ray.direction));
+    rvec3 pError = rounding + abs(ray.direction) * tError;
+    rvec3 barycentricError = GAMMA_7 * s.magnitude;
+    if (pError.x + pError.y + pError.z >=
+        barycentricError.x + barycentricError.y + barycentricError.z)
+        return;
+    s.position = p;
+    s.normalError =
+        dot(abs(s.geometricNormal), rounding) + (numError + abs(t) * denError) / nLength;
+}
+
 // Position, normals and material at a hit. Sphere: N = (P - C) / r, with P projected back
 // onto the sphere; triangle: P, the vertex normals and the materials interpolated with
 // the barycentrics, the geometric normal normalize(cross(B - A, C - A)) when the
@@ -38,20 +73,23 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
         s.position = sphere.xyz + sphere.w * radial;
         s.magnitude = abs(sphere.xyz) + sphere.w * abs(radial);
         s.geometricNormal = radial;
+        s.normalError = dot(abs(radial), GAMMA_7 * s.magnitude);
         s.normal = radial;
         GpuMaterial m = fetchMaterial(fetchSphereMaterialIndex(hit.index));
         s.kd = m.diffuseShininess.xyz;
         s.ks = m.specular.xyz;
         s.shininess = m.diffuseShininess.w;
-        s.triangle = NO_TRIANGLE;
+        s.flatPatch = NO_PATCH;
     } else {
-        uvec3 v = fetchTriangle(hit.index);
+        uvec4 v = fetchTriangle(hit.index);
         rvec3 w = hit.barycentric;
         rvec3 a = fetchPosition(v.x), b = fetchPosition(v.y), c = fetchPosition(v.z);
         // From the barycentrics rather than o + t d: its error scales with the vertices only.
         s.position = w.x * a + w.y * b + w.z * c;
         s.magnitude = w.x * abs(a) + w.y * abs(b) + w.z * abs(c);
         s.geometricNormal = normalizeOr(cross(b - a, c - a), -ray.direction);
+        s.normalError = dot(abs(s.geometricNormal), GAMMA_7 * s.magnitude);
+        if (rayOffsetKind == RAY_OFFSET_ERROR_BOUND) onTrianglePlane(ray, a, b, c, s);
         rvec3 n = w.x * fetchNormal(v.x) + w.y * fetchNormal(v.y) + w.z * fetchNormal(v.z);
         s.normal = normalizeOr(n, s.geometricNormal);
         GpuMaterial ma = vertexMaterial(v.x);
@@ -63,7 +101,7 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
         s.kd = kdShininess.xyz;
         s.shininess = kdShininess.w;
         s.ks = wf.x * ma.specular.xyz + wf.y * mb.specular.xyz + wf.z * mc.specular.xyz;
-        s.triangle = hit.index;
+        s.flatPatch = v.w;
     }
     if (dot(s.normal, ray.direction) > 0.0) s.normal = -s.normal;
     return s;
@@ -73,7 +111,7 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
 // surface d leaves on, so it cannot hit the surface it starts from (ray_offset.glsl).
 Ray leavingRay(SurfacePoint s, rvec3 d) {
     rvec3 side = dot(s.geometricNormal, d) > 0.0 ? s.geometricNormal : -s.geometricNormal;
-    return Ray(offsetRayOrigin(s.position, side, s.magnitude), d, s.triangle);
+    return Ray(offsetRayOrigin(s.position, side, s.magnitude, s.normalError), d, s.flatPatch);
 }
 
 // Whether any surface lies strictly between the point and the light (unit direction l):

@@ -33,7 +33,7 @@ using uint = std::uint32_t;
 #define BINDING_OUTPUT_IMAGE 0     // rgba8 storage image the kernel writes
 #define BINDING_SPHERES 1          // vec4 per sphere: centre xyz, radius w
 #define BINDING_SPHERE_MATERIALS 2 // uint per sphere: index into materials
-#define BINDING_TRIANGLES 3        // 3 uint per triangle: indices into the vertex arrays
+#define BINDING_TRIANGLES 3        // uvec4 per triangle: vertex indices, its flat patch
 #define BINDING_VERTEX_POSITIONS                                                                   \
     4                            // vec4 per vertex: position xyz, w: its material index (uint bits)
 #define BINDING_VERTEX_NORMALS 5 // 3 floats per vertex: normal xyz as given, tightly packed
@@ -47,7 +47,7 @@ using uint = std::uint32_t;
 // is a loop over the lanes (docs/performance.md).
 #define BINDING_FIRST_TEXEL_BUFFER 10
 #define BINDING_SPHERE_TEXELS 10   // RGBA32F view of BINDING_SPHERES
-#define BINDING_TRIANGLE_TEXELS 11 // R32UI view of BINDING_TRIANGLES
+#define BINDING_TRIANGLE_TEXELS 11 // RGBA32UI view of BINDING_TRIANGLES
 #define BINDING_POSITION_TEXELS 12 // RGBA32F view of BINDING_VERTEX_POSITIONS
 #define BINDING_BVH_NODE_TEXELS 13 // RGBA32F view of BINDING_BVH_NODES, 4 texels per node
 #define BINDING_NORMAL_TEXELS 14   // R32F view of BINDING_VERTEX_NORMALS

@@ -30,7 +30,7 @@ layout(constant_id = SPEC_HAS_SPECULAR) const bool sceneHasSpecular = true;
 layout(constant_id = SPEC_SAMPLER) const uint samplerKind = SAMPLER_R2;
 layout(constant_id = SPEC_STABLE_SPHERE_TEST) const bool stableSphereTest = true;
 layout(constant_id = SPEC_WATERTIGHT_TRIANGLES) const bool watertightTriangles = true;
-layout(constant_id = SPEC_RAY_OFFSET) const uint rayOffsetKind = RAY_OFFSET_SCALED;
+layout(constant_id = SPEC_RAY_OFFSET) const uint rayOffsetKind = RAY_OFFSET_ERROR_BOUND;
 // Whether the loops read the scene through texel buffers (scene_reads.glsl); the host turns
 // it off for an array beyond maxTexelBufferElements and for --storage-reads.
 layout(constant_id = SPEC_TEXEL_READS) const bool texelReads = true;
@@ -64,9 +64,10 @@ layout(set = 0, binding = BINDING_SPHERES, std430) readonly buffer SphereBuffer 
 layout(set = 0, binding = BINDING_SPHERE_MATERIALS, std430) readonly buffer SphereMaterialBuffer {
     uint sphereMaterials[];
 };
-// Per triangle, three consecutive indices into the vertex arrays.
+// Per triangle, its three indices into the vertex arrays in xyz and in w the number of its
+// flat patch, the coplanar triangles it touches (host/render/flat_patches.h, ray_offset.glsl).
 layout(set = 0, binding = BINDING_TRIANGLES, std430) readonly buffer TriangleBuffer {
-    uint triangleVertices[];
+    uvec4 triangles[];
 };
 // Per vertex, its position in xyz and the index of its material in materials[] in w: the
 // float's bits, or in fp64 a double holding the index (shade.glsl, vertexMaterial).

@@ -38,11 +38,7 @@ index.txt: one scene per line, `key=value` fields separated by spaces:
   file, family, parameter (what value measures), value, width, height, fov (degrees),
   depth, axes (the method options worth varying for this scene, comma-separated; the
   others stay at their defaults), must_fail (combinations that must show failures,
-  ';'-separated, each a '+'-joined list of option:value; '-' for none), fp32_allowed (the
-  failure rate the defaults may show in fp32: 0 but where binary32 itself is measured to
-  limit the scene), never_fail (the choices, over the defaults, that must show no failure:
-  '-' for the defaults themselves; the ground scenes name --offset error-bound, which the
-  scaled default fails).
+  ';'-separated, each a '+'-joined list of option:value; '-' for none).
 
 Deterministic (no randomness, no clock), standard library only.
 """
@@ -411,9 +407,7 @@ def ground(extent, size=1.0, height=1.0, light="grazing", mirror=False):
         scene.quad(corners[a], corners[b], corners[c], corners[d], n, box)
     key = (extent, size, light, mirror)
     return scene.text(), dict(fov=60.0, depth=5 if mirror else 0, axes=("offset", "precision"),
-                              must_fail=GROUND_MUST_FAIL.get(key, []),
-                              never_fail={"offset": "error-bound"},
-                              fp32_allowed=GROUND_FP32_ALLOWED.get(key, 0.0))
+                              must_fail=GROUND_MUST_FAIL.get(key, []))
 
 
 # Where the naive offsets are measured to fail on the committed ground scenes (tools/stability,
@@ -430,17 +424,6 @@ GROUND_MUST_FAIL = {
     (1e3, 1e-3, "grazing", False): [SCALED, FIXED],
     (1e6, 10.0, "grazing", False): [SCALED],
     (1e5, 1.0, "grazing", True): [SCALED],
-}
-# The defaults' measured floor in fp32, about twice the rate measured: thin grazing shadows
-# on a ground whose vertices lie 1e5 and more from its visible part, where the hit point's
-# own rounding error (gamma(7) times those vertices, 0.04 to 0.2 units) moves a shadow's
-# edge across pixel centres. Every offset gives the same pixels there (fixed included), and
-# fp64 none; docs/accuracy.md has the figures.
-GROUND_FP32_ALLOWED = {
-    (2e5, 1.0, "grazing", False): 0.0005,
-    (1e6, 1.0, "grazing", False): 0.003,
-    (1e3, 1e-3, "grazing", False): 0.0025,
-    (1e5, 1.0, "grazing", True): 0.001,
 }
 
 
@@ -516,15 +499,13 @@ def index_line(stem, family, value, settings):
         ("height", settings.get("height", HEIGHT)), ("fov", "%.17g" % settings["fov"]),
         ("depth", settings["depth"]), ("axes", ",".join(settings["axes"])),
         ("must_fail", must_fail_text(settings["must_fail"])),
-        ("fp32_allowed", "%g" % settings.get("fp32_allowed", 0.0)),
-        ("never_fail", must_fail_text([settings["never_fail"]]) if "never_fail" in settings else "-"),
     ]
     return " ".join("%s=%s" % kv for kv in fields)
 
 
 INDEX_HEADER = ("# Stress scenes (written by tools/make_stress_scenes.py; do not edit by hand).\n"
                 "# One scene per line: file family parameter value width height fov depth axes "
-                "must_fail fp32_allowed never_fail\n")
+                "must_fail\n")
 
 
 def build(entries):

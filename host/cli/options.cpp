@@ -119,7 +119,7 @@ std::string usageText() {
            "                        Benthin and Wald 2013 (default watertight)\n"
            "  --offset fixed|scaled|error-bound  secondary-ray origins: 1e-4 along the\n"
            "                        normal, Waechter-Binder scale-relative, or the hit point's\n"
-           "                        rounding-error bound (default scaled)\n"
+           "                        rounding-error bound (default error-bound)\n"
            "  --depth D             reflection bounces after the primary hit, 0 to " +
            std::to_string(MAX_DEPTH) +
            " (default 5)\n"

@@ -34,7 +34,7 @@ struct KernelChoices {
     Precision precision = Precision::Fp32;
     SphereTest sphereTest = SphereTest::Stable;
     TriangleTest triangleTest = TriangleTest::Watertight;
-    RayOffset offset = RayOffset::Scaled;
+    RayOffset offset = RayOffset::ErrorBound;
 
     bool operator==(const KernelChoices&) const = default;
 };

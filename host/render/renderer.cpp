@@ -82,7 +82,7 @@ TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderS
     TraceSpecialization specialization;
     specialization.useHierarchy = !packed.bvhNodes.empty();
     specialization.hasSpheres = !packed.spheres.empty();
-    specialization.hasTriangles = !packed.triangleVertices.empty();
+    specialization.hasTriangles = !packed.triangles.empty();
     // Spheres and vertices only refer to materials in the list, so a ks > 0 that no
     // primitive uses is impossible; the check is on the float values the kernel reads.
     const bool anySpecular = std::any_of(

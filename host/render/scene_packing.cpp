@@ -1,5 +1,7 @@
 #include "render/scene_packing.h"
 
+#include "render/flat_patches.h"
+
 #include <algorithm>
 #include <bit>
 #include <chrono>
@@ -148,17 +150,34 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
     // A closed mesh has about half as many vertices as triangles.
     std::vector<PackedVertex> vertices;
     Deduplicator<PackedVertex> vertexIndices(vertices, scene.triangles.size() / 2);
-    packed.triangleVertices.reserve(3 * scene.triangles.size());
+    // The corners by position alone, whatever their normals and materials: what the flat
+    // patches join triangles through.
+    std::vector<glm::dvec4> corners;
+    Deduplicator<glm::dvec4> cornerIndices(corners, scene.triangles.size() / 2);
+    std::vector<std::uint32_t> cornersOfTriangles;
+    cornersOfTriangles.reserve(3 * scene.triangles.size());
+    packed.triangles.reserve(scene.triangles.size());
     for (const Triangle& triangle : scene.triangles) {
-        for (const Vertex& vertex : triangle.vertices) {
+        glm::uvec4 packedTriangle(0u);
+        for (int k = 0; k < 3; ++k) {
+            const Vertex& vertex = triangle.vertices[k];
             PackedVertex packedVertex{};
             packedVertex.position = toVec4(vertex.position);
             packedVertex.normal = toVec4(vertex.normal);
             packedVertex.material = materialIndex(vertex.material);
             if (fp64) packedVertex.exactPosition = glm::dvec4(vertex.position, 0.0);
-            packed.triangleVertices.push_back(vertexIndices.indexOf(packedVertex));
+            packedTriangle[k] = vertexIndices.indexOf(packedVertex);
+            // The position the GPU computes with: rounded to float in fp32.
+            const glm::dvec3 corner =
+                fp64 ? vertex.position : glm::dvec3(glm::vec3(vertex.position));
+            cornersOfTriangles.push_back(cornerIndices.indexOf(glm::dvec4(corner, 0.0)));
         }
+        packed.triangles.push_back(packedTriangle);
     }
+    std::vector<glm::dvec3> cornerPositions(corners.begin(), corners.end());
+    const std::vector<std::uint32_t> patches = flatPatches(cornerPositions, cornersOfTriangles);
+    for (std::size_t t = 0; t < packed.triangles.size(); ++t)
+        packed.triangles[t].w = patches[t];
     packed.vertexPositions.reserve(vertices.size());
     packed.vertexNormals.reserve(3 * vertices.size());
     // 28 bytes a vertex: the material index rides in the position's unused w, and the
@@ -221,11 +240,11 @@ namespace {
 // covers it), a double one outward to float (appendBox).
 template <typename Vec4>
 PrimitiveBounds boundsOf(const std::vector<Vec4>& spheres, const std::vector<Vec4>& positions,
-                         const std::vector<std::uint32_t>& triangleVertices) {
+                         const std::vector<glm::uvec4>& triangles) {
     using Vec3 = glm::vec<3, typename Vec4::value_type>;
     PrimitiveBounds bounds;
     bounds.sphereCount = std::uint32_t(spheres.size());
-    bounds.boxes.reserve(6 * (spheres.size() + triangleVertices.size() / 3));
+    bounds.boxes.reserve(6 * (spheres.size() + triangles.size()));
     for (const Vec4& sphere : spheres) {
         glm::dvec3 center(sphere);
         double magnitude =
@@ -233,10 +252,10 @@ PrimitiveBounds boundsOf(const std::vector<Vec4>& spheres, const std::vector<Vec
         double reach = double(sphere.w) + kSphereBoxMargin * magnitude;
         appendBox(bounds.boxes, Vec3(center - reach), Vec3(center + reach));
     }
-    for (std::size_t i = 0; i + 2 < triangleVertices.size(); i += 3) {
-        Vec3 a(positions[triangleVertices[i]]);
-        Vec3 b(positions[triangleVertices[i + 1]]);
-        Vec3 c(positions[triangleVertices[i + 2]]);
+    for (const glm::uvec4& triangle : triangles) {
+        Vec3 a(positions[triangle.x]);
+        Vec3 b(positions[triangle.y]);
+        Vec3 c(positions[triangle.z]);
         appendBox(bounds.boxes, glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c)));
     }
     return bounds;
@@ -246,13 +265,13 @@ PrimitiveBounds boundsOf(const std::vector<Vec4>& spheres, const std::vector<Vec
 
 PrimitiveBounds primitiveBounds(const PackedScene& packed) {
     if (!packed.spheres64.empty() || !packed.vertexPositions64.empty())
-        return boundsOf(packed.spheres64, packed.vertexPositions64, packed.triangleVertices);
-    return boundsOf(packed.spheres, packed.vertexPositions, packed.triangleVertices);
+        return boundsOf(packed.spheres64, packed.vertexPositions64, packed.triangles);
+    return boundsOf(packed.spheres, packed.vertexPositions, packed.triangles);
 }
 
 void applyLeafOrder(PackedScene& packed, const Bvh& bvh) {
     if (bvh.sphereOrder.size() != packed.spheres.size() ||
-        bvh.triangleOrder.size() * 3 != packed.triangleVertices.size())
+        bvh.triangleOrder.size() != packed.triangles.size())
         throw std::logic_error("applyLeafOrder: the hierarchy was built for another scene");
     std::vector<glm::vec4> spheres(packed.spheres.size());
     std::vector<std::uint32_t> sphereMaterials(packed.spheres.size());
@@ -262,15 +281,13 @@ void applyLeafOrder(PackedScene& packed, const Bvh& bvh) {
         sphereMaterials[slot] = packed.sphereMaterials[bvh.sphereOrder[slot]];
         if (!spheres64.empty()) spheres64[slot] = packed.spheres64[bvh.sphereOrder[slot]];
     }
-    std::vector<std::uint32_t> triangleVertices(packed.triangleVertices.size());
+    std::vector<glm::uvec4> triangles(packed.triangles.size());
     for (std::size_t slot = 0; slot < bvh.triangleOrder.size(); ++slot)
-        for (std::size_t k = 0; k < 3; ++k)
-            triangleVertices[3 * slot + k] =
-                packed.triangleVertices[3 * std::size_t(bvh.triangleOrder[slot]) + k];
+        triangles[slot] = packed.triangles[bvh.triangleOrder[slot]];
     packed.spheres = std::move(spheres);
     packed.spheres64 = std::move(spheres64);
     packed.sphereMaterials = std::move(sphereMaterials);
-    packed.triangleVertices = std::move(triangleVertices);
+    packed.triangles = std::move(triangles);
 }
 
 PackedScene packScene(const Scene& scene, Acceleration acceleration, Precision precision) {
@@ -281,7 +298,7 @@ PackedScene packScene(const Scene& scene, Acceleration acceleration, Precision p
     report.buildMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     applyLeafOrder(packed, bvh);
-    report.primitives = packed.spheres.size() + packed.triangleVertices.size() / 3;
+    report.primitives = packed.spheres.size() + packed.triangles.size();
     report.nodes = bvh.nodes.size();
     report.depth = bvh.depth;
     report.used = useHierarchy(acceleration, report.primitives);

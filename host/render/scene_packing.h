@@ -29,12 +29,13 @@ std::string accelerationSummary(const HierarchyReport& report);
 
 // The scene as the GPU sees it, still on the CPU (easy to test).
 struct PackedScene {
-    std::vector<glm::vec4> spheres;              // centre xyz, radius w
-    std::vector<std::uint32_t> sphereMaterials;  // index into materials
-    std::vector<std::uint32_t> triangleVertices; // 3 vertex indices per triangle
-    std::vector<glm::vec4> vertexPositions;      // xyz; w: index into materials (uint bits)
-    std::vector<float> vertexNormals;            // 3 per vertex: xyz as given
-    std::vector<gpu::GpuMaterial> materials;     // each distinct material once
+    std::vector<glm::vec4> spheres;             // centre xyz, radius w
+    std::vector<std::uint32_t> sphereMaterials; // index into materials
+    // Per triangle, its vertex indices in xyz and its flat patch in w (flat_patches.h).
+    std::vector<glm::uvec4> triangles;
+    std::vector<glm::vec4> vertexPositions;  // xyz; w: index into materials (uint bits)
+    std::vector<float> vertexNormals;        // 3 per vertex: xyz as given
+    std::vector<gpu::GpuMaterial> materials; // each distinct material once
     std::vector<gpu::GpuLight> lights;
     std::vector<gpu::GpuBvhNode> bvhNodes; // empty: the shader tests every primitive
     glm::vec4 ambient{0.0f};

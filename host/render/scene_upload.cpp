@@ -36,7 +36,7 @@ struct TexelView {
 // formats are ones every Vulkan device supports for uniform texel buffers.
 constexpr TexelView kTexelViews[] = {
     {BINDING_SPHERE_TEXELS, BINDING_SPHERES, VK_FORMAT_R32G32B32A32_SFLOAT, 16, true},
-    {BINDING_TRIANGLE_TEXELS, BINDING_TRIANGLES, VK_FORMAT_R32_UINT, 4, false},
+    {BINDING_TRIANGLE_TEXELS, BINDING_TRIANGLES, VK_FORMAT_R32G32B32A32_UINT, 16, false},
     {BINDING_POSITION_TEXELS, BINDING_VERTEX_POSITIONS, VK_FORMAT_R32G32B32A32_SFLOAT, 16, true},
     {BINDING_BVH_NODE_TEXELS, BINDING_BVH_NODES, VK_FORMAT_R32G32B32A32_SFLOAT, 16, false},
     {BINDING_NORMAL_TEXELS, BINDING_VERTEX_NORMALS, VK_FORMAT_R32_SFLOAT, 4, false},
@@ -59,7 +59,7 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
         fp64 ? view(BINDING_SPHERES, "spheres", packed.spheres64)
              : view(BINDING_SPHERES, "spheres", packed.spheres),
         view(BINDING_SPHERE_MATERIALS, "sphere materials", packed.sphereMaterials),
-        view(BINDING_TRIANGLES, "triangles", packed.triangleVertices),
+        view(BINDING_TRIANGLES, "triangles", packed.triangles),
         fp64 ? view(BINDING_VERTEX_POSITIONS, "vertex positions", packed.vertexPositions64)
              : view(BINDING_VERTEX_POSITIONS, "vertex positions", packed.vertexPositions),
         view(BINDING_VERTEX_NORMALS, "vertex normals", packed.vertexNormals),
@@ -131,7 +131,7 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
     }
     scene.bytes = size;
     scene.sphereCount = static_cast<std::uint32_t>(packed.spheres.size());
-    scene.triangleCount = static_cast<std::uint32_t>(packed.triangleVertices.size() / 3);
+    scene.triangleCount = static_cast<std::uint32_t>(packed.triangles.size());
     scene.lightCount = static_cast<std::uint32_t>(packed.lights.size());
     scene.ambient = packed.ambient;
     return scene;

@@ -227,7 +227,7 @@ TEST(CommandLine, BenchPrintsOneJsonLineWithEveryKey) {
                             "\"precision\": \"fp32\"",
                             "\"sphere_test\": \"stable\"",
                             "\"triangle_test\": \"watertight\"",
-                            "\"offset\": \"scaled\""})
+                            "\"offset\": \"error-bound\""})
         EXPECT_NE(json.find(key), std::string::npos) << key << " missing from " << json;
     EXPECT_EQ(json.find("null"), std::string::npos) << "lavapipe has timestamps: " << json;
 }

@@ -3,18 +3,20 @@
 // reference, with --depth 0 and --depth 5, once walking the bounding volume hierarchy
 // (--accel bvh) and once testing every primitive (--accel none).
 //
-// Tolerance: at least 99.5% of pixels within 2/255 in every channel. The GPU
-// works in fp32 and the reference in fp64, so colours agree to far below one
-// level except where a ray's fate flips between the two precisions: pixels on a
-// silhouette, a shadow edge or a reflected edge, where a few pixels in a
-// thousand may take the other side. The failure output keeps both images and a
-// diff image.
+// Tolerance: at least 99.9% of pixels within 2/255 in every channel, in fp32 and fp64. The
+// GPU works in fp32 and the reference in fp64, so colours agree to far below one level
+// except where a ray's fate flips between the two precisions: pixels on a silhouette, a
+// shadow edge or a reflected edge, where a pixel in ten thousand may take the other side
+// (measured: every scene at 99.99% or above, docs/accuracy.md). Each case prints its worst
+// figure ("conformance worst"); the failure output keeps both images and a diff image.
 //
 // fp64 rows (--precision fp64): the same scenes with the geometry in double. The fate of
 // a ray then flips only where the float parts (the primary ray's direction, materials,
 // lights, colours) decide it, so fp64 must be at least as close as fp32: no more pixels
-// outside 2/255 than fp32 on the same scene, and at least 99.9% within (measured: every
-// scene at 99.99% or above, most exact).
+// outside 2/255 than fp32 on the same scene.
+//
+// The stress scenes (scenes/stress/) are held to a stricter rule by stability_test: no
+// pixel outside the reference's range, at depth 0 and 5.
 //
 // The two GPU paths must agree exactly: they run the same primitive tests in the same
 // primitive order with the same tie rule, and the hierarchy's box test is conservative,
@@ -43,8 +45,7 @@ namespace {
 constexpr int kWidth = 160;
 constexpr int kHeight = 120;
 constexpr int kTolerance = 2;
-constexpr double kMinimumMatch = 0.995;
-constexpr double kMinimumMatchFp64 = 0.999;
+constexpr double kMinimumMatch = 0.999;
 
 struct ConformanceCase {
     std::filesystem::path scene;
@@ -99,11 +100,10 @@ long differingPixels(const Image8& a, const Image8& b) {
 
 // Compares with the reference under the conformance tolerance, keeping images on failure.
 ImageComparison expectMatchesReference(const Image8& gpu, const Image8& reference,
-                                       const std::filesystem::path& dir, const std::string& label,
-                                       double minimumMatch = kMinimumMatch) {
+                                       const std::filesystem::path& dir, const std::string& label) {
     ImageComparison comparison = compareImages(gpu, reference, kTolerance);
     std::printf("conformance %s: %s\n", label.c_str(), describe(comparison).c_str());
-    if (comparison.fractionWithinTolerance < minimumMatch) {
+    if (comparison.fractionWithinTolerance < kMinimumMatch) {
         writePng(dir / "reference.png", reference);
         writePng(dir / (label + "-diff.png"), diffImage(gpu, reference, kTolerance));
         ADD_FAILURE() << label << ": " << describe(comparison) << "; images kept in " << dir;
@@ -134,12 +134,20 @@ TEST_P(Conformance, GpuMatchesCpuReferenceWithAndWithoutHierarchy) {
     Image8 reference = renderReference(loadScene(test.scene), settings);
     std::string label = test.scene.filename().string() + " depth " + std::to_string(test.depth);
     ImageComparison fp32 = expectMatchesReference(bvh, reference, dir, label + " bvh");
-    expectMatchesReference(none, reference, dir, label + " none");
+    ImageComparison fp32none = expectMatchesReference(none, reference, dir, label + " none");
     EXPECT_EQ(differingPixels(bvh, none), 0)
         << "the hierarchy changed pixels; images kept in " << dir;
-    ImageComparison double64 =
-        expectMatchesReference(bvh64, reference, dir, label + " bvh fp64", kMinimumMatchFp64);
-    expectMatchesReference(none64, reference, dir, label + " none fp64", kMinimumMatchFp64);
+    ImageComparison double64 = expectMatchesReference(bvh64, reference, dir, label + " bvh fp64");
+    ImageComparison double64none =
+        expectMatchesReference(none64, reference, dir, label + " none fp64");
+    // The worst of each precision, as docs/accuracy.md lists them.
+    std::printf(
+        "conformance worst %s: fp32 %.3f%%, fp64 %.3f%% within 2/255, max diff %d/255\n",
+        label.c_str(),
+        100.0 * std::min(fp32.fractionWithinTolerance, fp32none.fractionWithinTolerance),
+        100.0 * std::min(double64.fractionWithinTolerance, double64none.fractionWithinTolerance),
+        std::max({fp32.maxChannelDifference, fp32none.maxChannelDifference,
+                  double64.maxChannelDifference, double64none.maxChannelDifference}));
     EXPECT_EQ(differingPixels(bvh64, none64), 0)
         << "the hierarchy changed pixels in fp64; images kept in " << dir;
     EXPECT_LE(double64.pixels - double64.pixelsWithinTolerance,

@@ -15,14 +15,11 @@
 // region where the reference is smooth over the 3x3 pixels around it (wider where the
 // perturbation reaches further) must never be excused.
 //
-// Asserted: (a) the default methods (stable, watertight, scaled), or the scene's never_fail
-// choice over them (the ground scenes: --offset error-bound, which the scaled default fails),
-// have no wrong pixel on any stress scene in fp64, nor in fp32 beyond the scene's
-// fp32_allowed (0 but on a few ground scenes, where binary32 places a hit point only to
-// gamma(7) times vertices 1e5 away: the measured floor, whatever the offset); (b) each scene's
-// must_fail combinations (a naive method where it is known to break, in fp32) have at least 0.1%
-// wrong pixels, so the suite provably sees failures. Every failure rate is printed and written to
-// BUILD/test-output/stability/SCENE_PRECISION.csv.
+// Asserted: (a) the default methods (stable, watertight, error-bound) have no wrong pixel on
+// any stress scene in fp32 or fp64, at the scene's depth and at the other of 0 and 5; (b) each
+// scene's must_fail combinations (a naive method where it is known to break, in fp32) have
+// at least 0.1% wrong pixels, so the suite provably sees failures. Every failure rate is printed
+// and written to BUILD/test-output/stability/SCENE_PRECISION.csv.
 #include "test_support.h"
 
 #include "reference_range.h"
@@ -52,7 +49,6 @@ struct StressScene {
     std::map<std::string, std::string> fields; // index.txt's key=value fields
     std::vector<std::string> axes;
     std::vector<Choices> mustFail;
-    Choices neverFailOver; // index.txt's never_fail: choices that replace the defaults
     std::string stem() const { return std::filesystem::path(fields.at("file")).stem().string(); }
     int number(const std::string& key) const { return std::stoi(fields.at(key)); }
 };
@@ -84,11 +80,6 @@ std::vector<StressScene> readIndex() {
                     choices[pair.substr(0, colon)] = pair.substr(colon + 1);
                 }
                 scene.mustFail.push_back(choices);
-            }
-        if (scene.fields["never_fail"] != "-")
-            for (const std::string& pair : split(scene.fields["never_fail"], '+')) {
-                const std::size_t colon = pair.find(':');
-                scene.neverFailOver[pair.substr(0, colon)] = pair.substr(colon + 1);
             }
         scenes.push_back(scene);
     }
@@ -123,10 +114,10 @@ std::string caseName(const testing::TestParamInfo<StabilityCase>& info) {
 const std::map<std::string, std::vector<std::string>> kMethodValues = {
     {"sphere-test", {"stable", "naive"}},
     {"triangle-test", {"watertight", "mt"}},
-    {"offset", {"scaled", "fixed", "error-bound"}},
+    {"offset", {"error-bound", "scaled", "fixed"}},
 };
 const Choices kDefaults = {
-    {"sphere-test", "stable"}, {"triangle-test", "watertight"}, {"offset", "scaled"}};
+    {"sphere-test", "stable"}, {"triangle-test", "watertight"}, {"offset", "error-bound"}};
 
 // The defaults with every listed method axis varied (precision is the test's own).
 std::vector<Choices> combinations(const StressScene& scene, const std::string& precision) {
@@ -210,16 +201,11 @@ TEST_P(Stability, DefaultsNeverFailAndNaiveMethodsFailWhereExpected) {
     std::ofstream csv(csvPath);
     csv << "scene,family,parameter,value,precision,sphere_test,triangle_test,offset,pixels,"
            "differing,wrong,failure_rate\n";
-    // What must hold: the defaults, or the index's never_fail choices over them, with no more
-    // wrong pixels than fp32_allowed in fp32 (the measured floor of binary32 on that scene,
-    // which no offset moves, docs/accuracy.md; 0 for all but a few ground scenes), and none
-    // in fp64.
-    Choices neverFail = kDefaults;
-    for (const auto& [option, value] : stress.neverFailOver)
-        neverFail[option] = value;
-    const double allowed = precision == "fp32" ? std::stod(stress.fields.at("fp32_allowed")) : 0.0;
-    for (const Choices& choices : combinations(stress, precision)) {
-        const std::filesystem::path png = dir / (label(choices) + ".png");
+    // Renders with the given choices (and precision) at depth, into name.png, and counts its
+    // wrong pixels against range; an empty image when the program failed (the test fails).
+    auto renderAndCount = [&](const Choices& choices, const std::string& depth,
+                              const std::string& name, ReferenceRange& against, Image8& image) {
+        const std::filesystem::path png = dir / (name + ".png");
         std::vector<std::string> args = {scenePath.string(),
                                          "-o",
                                          png.string(),
@@ -231,21 +217,30 @@ TEST_P(Stability, DefaultsNeverFailAndNaiveMethodsFailWhereExpected) {
                                          "--fov",
                                          stress.fields.at("fov"),
                                          "--depth",
-                                         stress.fields.at("depth")};
+                                         depth};
         for (const auto& [option, value] : choices) {
             args.push_back("--" + option);
             args.push_back(value);
         }
         const ProcessResult run = runRaytracer(args);
-        ASSERT_EQ(run.exitCode, 0) << label(choices) << ": " << run.err;
-        ASSERT_FALSE(hasValidationMessage(run)) << run.err;
-        const Image8 image = readPng(png);
-        const StabilityCount count = countWrongPixels(image, range, kTolerance);
-        std::printf("stability %s %s %-28s wrong %6.2f%% (%ld of %ld; %ld differ by more than "
-                    "%d/255)\n",
-                    stress.stem().c_str(), precision.c_str(), label(choices).c_str(),
+        EXPECT_EQ(run.exitCode, 0) << name << ": " << run.err;
+        EXPECT_FALSE(hasValidationMessage(run)) << run.err;
+        if (run.exitCode != 0) return StabilityCount{};
+        image = readPng(png);
+        const StabilityCount count = countWrongPixels(image, against, kTolerance);
+        std::printf("stability %s %s %-28s depth %s wrong %6.2f%% (%ld of %ld; %ld differ by "
+                    "more than %d/255)\n",
+                    stress.stem().c_str(), precision.c_str(), name.c_str(), depth.c_str(),
                     100.0 * count.failureRate, count.wrong, count.pixels, count.differing,
                     kTolerance);
+        return count;
+    };
+    // What must hold: the defaults with no wrong pixel, in fp32 and fp64.
+    for (const Choices& choices : combinations(stress, precision)) {
+        Image8 image;
+        const StabilityCount count =
+            renderAndCount(choices, stress.fields.at("depth"), label(choices), range, image);
+        if (HasFailure()) return;
         csv << stress.stem() << ',' << stress.fields.at("family") << ','
             << stress.fields.at("parameter") << ',' << stress.fields.at("value") << ',' << precision
             << ',' << choices.at("sphere-test") << ',' << choices.at("triangle-test") << ','
@@ -254,12 +249,12 @@ TEST_P(Stability, DefaultsNeverFailAndNaiveMethodsFailWhereExpected) {
 
         EXPECT_EQ(excusedGrossErrors(image, range), 0)
             << label(choices) << ": gross errors in a smooth region were excused as knife edges";
-        const bool mustHold = matches(choices, neverFail);
+        const bool mustHold = matches(choices, kDefaults);
         bool mustFail = false;
         for (const Choices& pattern : stress.mustFail)
             mustFail = mustFail || matches(choices, pattern);
         if (mustHold) {
-            EXPECT_LE(count.failureRate, allowed)
+            EXPECT_EQ(count.wrong, 0)
                 << label(choices) << " (must not fail) failed on " << stress.stem() << " in "
                 << precision << ": worst pixel (" << count.worstX << "," << count.worstY << ") "
                 << count.worstExcess << " levels outside the reference's range";
@@ -272,6 +267,20 @@ TEST_P(Stability, DefaultsNeverFailAndNaiveMethodsFailWhereExpected) {
         if (count.wrong != 0)
             writePng(dir / (label(choices) + "-wrong.png"),
                      wrongPixelImage(image, range, kTolerance));
+    }
+    // The defaults also at the other depth of the two the conformance suite renders every
+    // scene at (0 and 5): a mirror scene without its reflections, a matte one with them.
+    {
+        ReferenceSettings other = settings;
+        other.depth = settings.depth == 0 ? 5 : 0;
+        ReferenceRange otherRange(scene, other);
+        Image8 image;
+        const std::string depth = std::to_string(other.depth);
+        const StabilityCount count =
+            renderAndCount(kDefaults, depth, "defaults-depth" + depth, otherRange, image);
+        EXPECT_EQ(count.wrong, 0) << "the defaults at depth " << depth << " failed on "
+                                  << stress.stem() << " in " << precision << ": worst pixel ("
+                                  << count.worstX << "," << count.worstY << ")";
     }
     // Every must_fail pattern has to name a combination this test renders.
     for (const Choices& pattern : stress.mustFail) {

@@ -90,7 +90,8 @@ TEST(ScenePacking, SharesIdenticalMaterialsAndVertices) {
     EXPECT_EQ(packed.spheres.size(), 2u);
     EXPECT_EQ(packed.sphereMaterials, (std::vector<std::uint32_t>{0, 0}));
     EXPECT_EQ(packed.vertexPositions.size(), 4u);
-    EXPECT_EQ(packed.triangleVertices, (std::vector<std::uint32_t>{0, 1, 2, 1, 3, 2}));
+    // The two halves of the square are one flat patch (w).
+    EXPECT_EQ(packed.triangles, (std::vector<glm::uvec4>{{0, 1, 2, 0}, {1, 3, 2, 0}}));
     ASSERT_EQ(packed.vertexNormals.size(), 3 * 4u); // three floats per vertex
     std::vector<std::uint32_t> vertexMaterials;
     for (std::size_t v = 0; v < packed.vertexPositions.size(); ++v)
@@ -118,7 +119,7 @@ TEST(ScenePacking, VerticesDifferingOnlyInMaterialStaySeparate) {
 TEST(ScenePacking, AnEmptySceneHoldsNothing) {
     PackedScene packed = packSceneInFileOrder(Scene{});
     EXPECT_TRUE(packed.spheres.empty());
-    EXPECT_TRUE(packed.triangleVertices.empty());
+    EXPECT_TRUE(packed.triangles.empty());
     EXPECT_TRUE(packed.vertexPositions.empty());
     EXPECT_TRUE(packed.materials.empty());
     EXPECT_TRUE(packed.lights.empty());
@@ -246,7 +247,7 @@ TEST(KernelVariants, MethodChoicesBecomeSpecializationConstants) {
         traceSpecialization(packSceneInFileOrder(sceneWith({}, 1)), settings);
     EXPECT_EQ(robust.sampler, SAMPLER_R2);
     EXPECT_TRUE(robust.stableSphereTest && robust.watertightTriangles);
-    EXPECT_EQ(robust.rayOffset, RAY_OFFSET_SCALED);
+    EXPECT_EQ(robust.rayOffset, RAY_OFFSET_ERROR_BOUND);
     settings.kernel = {
         Sampler::Stratified, 3, Precision::Fp64, SphereTest::Naive, TriangleTest::MollerTrumbore,
         RayOffset::Fixed};
@@ -291,7 +292,7 @@ TEST(ScenePacking, Fp64KeepsGeometryInDoubleAndItsBoxesHoldIt) {
     }
     for (std::size_t t = 0; t < 2; ++t)
         for (std::size_t k = 0; k < 3; ++k) {
-            glm::dvec3 p(exact.vertexPositions64[exact.triangleVertices[3 * t + k]]);
+            glm::dvec3 p(exact.vertexPositions64[exact.triangles[t][int(k)]]);
             const float* box = &bounds.boxes[6 * (1 + t)];
             for (int axis = 0; axis < 3; ++axis) {
                 EXPECT_LE(double(box[axis]), p[axis]);

@@ -13,7 +13,7 @@ import sys
 
 COLUMNS = ["scene", "variant", "flags", "status", "spheres", "triangles", "compiled_out", "metric",
            "runs", "ms_min", "ms_max", "change_percent", "spread_percent", "gap_percent"]
-VARIANTS = ["default", "sphere naive", "triangle mt", "offset fixed", "all naive", "fp64", "general"]
+VARIANTS = ["default", "sphere naive", "triangle mt", "offset fixed", "offset scaled", "all naive", "fp64", "general"]
 
 
 def fail(message):

@@ -66,9 +66,9 @@ def check_stability(binary, source, out):
     # The near sphere with the defaults is exact; the far one with the textbook test is not.
     rate = {(r["family"], r["value"], r["precision"], r["sphere_test"], r["triangle_test"],
              r["offset"]): float(r["failure_rate"]) for r in rows}
-    if rate[("far_sphere", "10.0", "fp32", "stable", "watertight", "scaled")] != 0:
+    if rate[("far_sphere", "10.0", "fp32", "stable", "watertight", "error-bound")] != 0:
         fail("the defaults fail on the near sphere")
-    if rate[("far_sphere", "1000000.0", "fp32", "naive", "watertight", "scaled")] < 0.01:
+    if rate[("far_sphere", "1000000.0", "fp32", "naive", "watertight", "error-bound")] < 0.01:
         fail("the textbook sphere test does not fail at distance/radius 1e6")
     return out / "stability_chart.png"
 

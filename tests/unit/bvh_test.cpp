@@ -385,9 +385,7 @@ TEST(LeafOrder, KeepsEveryPrimitiveAndItsMaterialAndLeavesIndexTheReorderedArray
         EXPECT_EQ(packed.sphereMaterials[slot], original.sphereMaterials[bvh.sphereOrder[slot]]);
     }
     for (std::size_t slot = 0; slot < bvh.triangleOrder.size(); ++slot)
-        for (int k = 0; k < 3; ++k)
-            EXPECT_EQ(packed.triangleVertices[3 * slot + k],
-                      original.triangleVertices[3 * bvh.triangleOrder[slot] + k]);
+        EXPECT_EQ(packed.triangles[slot], original.triangles[bvh.triangleOrder[slot]]);
     EXPECT_EQ(packed.vertexPositions, original.vertexPositions); // vertices stay shared, untouched
     // The reordered scene's own boxes are inside the leaves that now index them.
     const PrimitiveBounds reordered = primitiveBounds(packed);

@@ -1,0 +1,101 @@
+#include "render/flat_patches.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace {
+
+struct Plane {
+    glm::dvec3 normal{0.0}; // unit; zero for a triangle of zero area
+    double offset = 0.0;    // dot(normal, any point of the plane)
+    double tolerance = 0.0; // kFlatTolerance times the triangle's largest coordinate
+};
+
+Plane planeOf(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    Plane plane;
+    const glm::dvec3 n = glm::cross(b - a, c - a);
+    const double length = glm::length(n);
+    if (!(length > 0.0) || !std::isfinite(length)) return plane;
+    plane.normal = n / length;
+    plane.offset = glm::dot(plane.normal, a);
+    const glm::dvec3 largest = glm::max(glm::abs(a), glm::max(glm::abs(b), glm::abs(c)));
+    plane.tolerance = kFlatTolerance * std::max({largest.x, largest.y, largest.z});
+    return plane;
+}
+
+// Disjoint sets with path halving.
+struct Patches {
+    std::vector<std::uint32_t> parent;
+    std::uint32_t find(std::uint32_t x) {
+        while (parent[x] != x)
+            x = parent[x] = parent[parent[x]];
+        return x;
+    }
+    void join(std::uint32_t a, std::uint32_t b) {
+        a = find(a);
+        b = find(b);
+        if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+};
+
+} // namespace
+
+std::vector<std::uint32_t> flatPatches(const std::vector<glm::dvec3>& positions,
+                                       const std::vector<std::uint32_t>& triangleVertices) {
+    const std::size_t triangleCount = triangleVertices.size() / 3;
+    std::vector<Plane> planes(triangleCount);
+    for (std::size_t t = 0; t < triangleCount; ++t)
+        planes[t] =
+            planeOf(positions[triangleVertices[3 * t]], positions[triangleVertices[3 * t + 1]],
+                    positions[triangleVertices[3 * t + 2]]);
+    // Whether every corner of each triangle lies in the other's plane (both ways, so that a
+    // sliver's ill-determined normal cannot join a triangle it is not flat with).
+    auto liesIn = [&](std::size_t t, std::size_t u) {
+        const Plane& plane = planes[u];
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double distance =
+                glm::dot(plane.normal, positions[triangleVertices[3 * t + k]]) - plane.offset;
+            if (!(std::abs(distance) <= std::max(plane.tolerance, planes[t].tolerance)))
+                return false;
+        }
+        return true;
+    };
+    auto flat = [&](std::size_t t, std::size_t u) {
+        return planes[t].tolerance > 0.0 && planes[u].tolerance > 0.0 && liesIn(t, u) &&
+               liesIn(u, t);
+    };
+
+    // The triangles at each vertex (counting sort by vertex index).
+    std::vector<std::uint32_t> firstAt(positions.size() + 1, 0);
+    for (std::uint32_t v : triangleVertices)
+        ++firstAt[v + 1];
+    std::partial_sum(firstAt.begin(), firstAt.end(), firstAt.begin());
+    std::vector<std::uint32_t> trianglesAt(triangleVertices.size());
+    std::vector<std::uint32_t> filled(firstAt.begin(), firstAt.end() - 1);
+    for (std::size_t i = 0; i < triangleVertices.size(); ++i)
+        trianglesAt[filled[triangleVertices[i]]++] = std::uint32_t(i / 3);
+
+    Patches patches;
+    patches.parent.resize(triangleCount);
+    std::iota(patches.parent.begin(), patches.parent.end(), 0u);
+    for (std::size_t v = 0; v < positions.size(); ++v) {
+        std::uint32_t representatives[kPlanesPerVertex];
+        int planeCount = 0;
+        for (std::uint32_t at = firstAt[v]; at < firstAt[v + 1]; ++at) {
+            const std::uint32_t t = trianglesAt[at];
+            if (planes[t].tolerance == 0.0) continue;
+            int k = 0;
+            while (k < planeCount && !flat(t, representatives[k]))
+                ++k;
+            if (k < planeCount)
+                patches.join(t, representatives[k]);
+            else if (planeCount < kPlanesPerVertex)
+                representatives[planeCount++] = t;
+        }
+    }
+    std::vector<std::uint32_t> patchOf(triangleCount);
+    for (std::uint32_t t = 0; t < triangleCount; ++t)
+        patchOf[t] = patches.find(t);
+    return patchOf;
+}
