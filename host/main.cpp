@@ -9,6 +9,7 @@
 #include "render/headless.h"
 #include "render/interrupt.h"
 #include "render/kernel_sources.h"
+#include "render/pixel_story.h"
 #include "scene/scene_loader.h"
 #include "window/window.h"
 
@@ -27,12 +28,26 @@ enum ExitStatus {
     kInterrupted = 128      // + the signal: 130 for SIGINT (Ctrl-C), 143 for SIGTERM
 };
 
-// Renders headless: either one frame to options.outputPath, or a benchmark.
+// --pixel: the story of that pixel as JSON on stdout (host/render/pixel_story.h), after
+// the frame when one was rendered (the output image is then in TRANSFER_SRC_OPTIMAL).
+void printPixelStory(const Options& options, Renderer& renderer, const Context& context,
+                     bool frameRendered) {
+    const gpu::GpuPixelStory story = tracePixelStory(
+        renderer, context, options.pixel.x, options.pixel.y,
+        frameRendered ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED);
+    const StoryHeader header{
+        options.scenePath.string(), options.pixel.x, options.pixel.y, options.width, options.height,
+        options.samplesPerPixel,    options.depth};
+    std::cout << pixelStoryJson(story, renderer.sources, header) << std::flush;
+}
+
+// Renders headless: one frame to options.outputPath, a benchmark, or (--pixel without -o)
+// only the story of one pixel.
 // Before any work, the output file is known to be writable (its .tmp exists) and the
 // image to fit the device; a failure or Ctrl-C afterwards removes the .tmp again.
 void runHeadless(const Options& options, const Scene& scene, const StartupTimes& startup) {
     installInterruptHandlers();
-    const bool writing = options.benchFrames == 0;
+    const bool writing = options.benchFrames == 0 && !options.outputPath.empty();
     if (writing) reservePngOutput(options.outputPath);
     OnFailure removeOutput([&] {
         if (writing) releasePngOutput(options.outputPath);
@@ -53,12 +68,13 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
     createHeadlessTarget(target, context, renderer, options.regionSide);
     if (options.benchFrames > 0) {
         std::cout << runBenchmark(context, renderer, target, options, startup) << std::endl;
-    } else {
+    } else if (writing) {
         renderHeadlessFrame(target, context, renderer,
                             options.progress ? ProgressMode::Always : ProgressMode::Auto);
         throwIfInterrupted();
         writePng(options.outputPath, readHeadlessImage(target, renderer));
     }
+    if (options.pixelGiven) printPixelStory(options, renderer, context, writing);
 }
 
 int run(int argc, char** argv, std::chrono::steady_clock::time_point processStart) {
@@ -84,7 +100,7 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
     for (const std::string& warning : scene.warnings)
         std::cerr << warning << '\n';
 
-    bool headless = !options.outputPath.empty() || options.benchFrames > 0;
+    bool headless = !options.outputPath.empty() || options.benchFrames > 0 || options.pixelGiven;
     if (!headless && !runWindow(options, scene)) {
         if (options.forceWindow)
             throw std::runtime_error("--window was given, but no window can be opened: " +
@@ -97,7 +113,7 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
         headless = true;
     }
     if (headless) runHeadless(options, scene, startup);
-    if (headless && options.benchFrames == 0)
+    if (headless && options.benchFrames == 0 && !options.outputPath.empty())
         std::cerr << "Wrote " << options.outputPath.string() << '\n';
 
     if (options.validate && validationMessageCount() > 0) {

@@ -1,6 +1,6 @@
 // Surface data at a hit and Phong shading with hard shadows, as docs/model.md defines them.
 // Needs: Ray, Hit (camera.glsl, intersect.glsl), anyHit (bvh.glsl), offsetRayOrigin
-// (ray_offset.glsl), the scene reads (scene_reads.glsl).
+// (ray_offset.glsl), the scene reads (scene_reads.glsl), the story's calls (pixel_story.glsl).
 
 // Everything shading needs about a hit point.
 struct SurfacePoint {
@@ -121,7 +121,9 @@ bool inShadow(SurfacePoint s, rvec3 lightPosition, rvec3 l) {
     rvec3 toLight = lightPosition - ray.origin;
     real lightDistance = length(toLight);
     ray.direction = toLight / lightDistance;
-    return anyHit(ray, shadowRayLength(ray.origin, lightPosition, lightDistance));
+    bool blocked = anyHit(ray, shadowRayLength(ray.origin, lightPosition, lightDistance));
+    if (blocked && storyRecording()) storyShadowBlocker(closestHit(ray)); // pixel_story.glsl
+    return blocked;
 }
 
 // Local Phong colour seen along direction -view: ambient once, then per unshadowed light
@@ -136,18 +138,28 @@ vec3 shadePhong(SurfacePoint s, rvec3 view) {
         // A light exactly at the point has no direction: l = 0 skips it below.
         rvec3 l = normalizeOr(lightPosition - s.position, rvec3(0.0));
         real nDotL = dot(s.normal, l);
-        if (nDotL <= 0.0) continue;
-        if (inShadow(s, lightPosition, l)) continue;
+        if (nDotL <= 0.0) {
+            storyLight(i, STORY_LIGHT_BEHIND, float(nDotL), vec3(0.0)); // pixel_story.glsl
+            continue;
+        }
+        if (inShadow(s, lightPosition, l)) {
+            storyLight(i, STORY_LIGHT_BLOCKED, float(nDotL), vec3(0.0));
+            continue;
+        }
         vec3 diffuse = s.kd * float(nDotL);
         if (!sceneHasSpecular) {
-            color += light.color.rgb * diffuse;
+            vec3 share = light.color.rgb * diffuse;
+            storyLight(i, STORY_LIGHT_LIT, float(nDotL), share);
+            color += share;
             continue;
         }
         rvec3 r = 2.0 * nDotL * s.normal - l;
         float rDotV = float(dot(r, view));
         // pow(x, 0) is 1 for x > 0; the test keeps pow away from 0 and negative bases.
         vec3 specular = rDotV > 0.0 ? s.ks * pow(rDotV, s.shininess) : vec3(0.0);
-        color += light.color.rgb * (diffuse + specular);
+        vec3 share = light.color.rgb * (diffuse + specular);
+        storyLight(i, STORY_LIGHT_LIT, float(nDotL), share);
+        color += share;
     }
     return color;
 }

@@ -54,7 +54,11 @@ using uint = std::uint32_t;
 #define BINDING_MATERIAL_TEXELS 15 // RGBA32F view of BINDING_MATERIALS, 2 texels per material
 #define BINDING_SPHERE_MATERIAL_TEXELS 16 // R32UI view of BINDING_SPHERE_MATERIALS
 #define BINDING_LIGHT_TEXELS 17           // RGBA32F view of BINDING_LIGHTS, 2 texels per light
-#define BINDING_COUNT 18
+#define BINDING_TEXEL_BUFFER_END 18       // one past the last texel buffer
+// The pixel story (docs/pixel_story.md): one GpuPixelStory, written only by the recording
+// kernel (SPEC_RECORD_PIXEL); a host-visible buffer the host reads back.
+#define BINDING_PIXEL_STORY 18
+#define BINDING_COUNT 19
 
 // Specialization constant ids (host/render/trace_pipeline.h, TraceSpecialization): bool unless
 // marked uint.
@@ -76,6 +80,9 @@ using uint = std::uint32_t;
 #define SPEC_BAKED_SPHERES 10
 #define SPEC_BAKED_SPHERE_COUNT 11
 #define SPEC_BAKED_LIGHT_COUNT 12
+// bool: the recording kernel of --pixel (docs/pixel_story.md): dispatched for one pixel, it
+// writes what it computes into BINDING_PIXEL_STORY instead of the image.
+#define SPEC_RECORD_PIXEL 13
 // The most spheres baked in: the closest-hit loop over them is unrolled, one test each.
 #define MAX_BAKED_SPHERES 15u
 #define RAY_OFFSET_FIXED 0u       // 1e-4 along the normal
@@ -145,6 +152,53 @@ struct GpuFrameParams {
     // (the window's progressive view) the sum of samples 0..z-1 is read from and the sum
     // of 0..z+w-1 written to BINDING_ACCUMULATION, and the output shows their average.
     uvec4 dispatch;
+};
+
+// The pixel story (--pixel, the window's I key; docs/pixel_story.md): what the recording
+// kernel computed for sample 0 of one pixel, bounce by bounce. Primitive indices are the
+// kernel's slots (leaf order); the host maps them to the file's order and lines.
+#define MAX_STORY_LIGHTS 16u   // lights recorded per bounce; the rest are counted, not recorded
+#define STORY_LIGHT_BEHIND 0u  // N.L <= 0 (also a light at the point itself): skipped
+#define STORY_LIGHT_BLOCKED 1u // the shadow ray hit something before the light
+#define STORY_LIGHT_LIT 2u
+// How a bounce ends its sample's ray, or goes on (GpuStoryBounce.hit.w).
+#define STORY_NEXT_REFLECT 0u         // a mirror ray follows: the next bounce
+#define STORY_NEXT_MISS 1u            // the ray hit nothing: the background
+#define STORY_NEXT_NO_MIRROR 2u       // ks == 0: the local colour ends it
+#define STORY_NEXT_DEPTH 3u           // --depth reflections reached (or 0): likewise
+#define STORY_NEXT_ZERO_THROUGHPUT 4u // the ks product is 0: nothing further can contribute
+
+// One light at one bounce. 32 bytes.
+struct GpuStoryLight {
+    vec4 contribution; // rgb: Lc (kd N.L + ks max(R.V, 0)^shininess) when lit, else 0; w: N.L
+    uvec4 shadow;      // x: STORY_LIGHT_*; blocked: y the blocker's hit kind (nearest one on
+                       // the shadow ray; 0 unknown), z its slot; w unused
+};
+
+// One ray of the sample and what it met. 672 bytes.
+struct GpuStoryBounce {
+    vec4 origin;           // ray origin xyz; w: t of the hit (0 for a miss)
+    vec4 direction;        // unit ray direction xyz; w unused
+    uvec4 hit;             // x: kind (0 none, 1 sphere, 2 triangle), y: slot, z: lights
+                           // recorded, w: STORY_NEXT_*
+    vec4 barycentric;      // triangles: the weights of vertices 0, 1, 2; w unused
+    vec4 normal;           // shading normal xyz, facing the ray; w unused
+    vec4 diffuseShininess; // kd xyz as shaded (interpolated on a triangle), shininess w
+    vec4 specular;         // ks xyz (also the mirror weight); w unused
+    vec4 local;            // local Phong colour rgb (ambient + lights); a miss: the background
+    vec4 throughput;       // rgb: this bounce's weight in the sample, the product of earlier ks
+    vec4 color;            // rgb: the sample's colour so far, this bounce's share included
+    GpuStoryLight lights[MAX_STORY_LIGHTS];
+};
+
+// The whole story of one pixel: its sample 0's tree and the pixel's final value.
+struct GpuPixelStory {
+    uvec4 counts;      // x: bounces recorded, y: lights in the scene, z: samples, w: 1 once written
+    vec4 sampleOffset; // xy: sample 0's (u, v) inside the pixel; zw unused
+    vec4 sampleColor;  // rgb: sample 0's colour before the clamp; w unused
+    vec4 pixelColor;   // rgb: the average of the clamped samples; w unused
+    uvec4 pixelLevel;  // rgb: the 8-bit levels written to the image; w unused
+    GpuStoryBounce bounces[MAX_DEPTH + 1];
 };
 
 GPU_NAMESPACE_END

@@ -39,6 +39,8 @@ layout(constant_id = SPEC_TEXEL_READS) const bool texelReads = true;
 layout(constant_id = SPEC_BAKED_SPHERES) const bool bakedSpheres = false;
 layout(constant_id = SPEC_BAKED_SPHERE_COUNT) const uint bakedSphereCount = 0u;
 layout(constant_id = SPEC_BAKED_LIGHT_COUNT) const uint bakedLightCount = 0u;
+// The recording kernel of --pixel (pixel_story.glsl): one pixel, into `story`, not the image.
+layout(constant_id = SPEC_RECORD_PIXEL) const bool recordPixel = false;
 
 // Camera, counts, image size, samples and depth for this dispatch (see GpuFrameParams).
 layout(push_constant) uniform FrameParamsBlock {
@@ -97,6 +99,11 @@ layout(set = 0, binding = BINDING_ACCUMULATION, std430) buffer AccumulationBuffe
     vec4 accumulation[];
 };
 
+// What the recording kernel computed for one pixel (pixel_story.glsl); the host reads it back.
+layout(set = 0, binding = BINDING_PIXEL_STORY, std430) buffer PixelStoryBuffer {
+    GpuPixelStory story;
+};
+
 #include "scene_reads.glsl"
 #include "baked_spheres.glsl"
 #include "camera.glsl"
@@ -104,6 +111,7 @@ layout(set = 0, binding = BINDING_ACCUMULATION, std430) buffer AccumulationBuffe
 #include "ray_offset.glsl"
 #include "intersect.glsl"
 #include "bvh.glsl"
+#include "pixel_story.glsl"
 #include "shade.glsl"
 
 // Colour seen along a primary ray: the model's recursion
@@ -115,13 +123,19 @@ vec3 traceRay(Ray ray) {
     vec3 throughput = vec3(1.0);
     for (uint bounce = 0u;; ++bounce) {
         Hit hit = closestHit(ray);
-        if (hit.kind == HIT_NONE) return color + throughput * params.background.rgb;
+        storyRay(bounce, ray, hit); // the story's calls record, in the --pixel kernel only
+        if (hit.kind == HIT_NONE)
+            return storyLast(STORY_NEXT_MISS, throughput, params.background.rgb,
+                             color + throughput * params.background.rgb);
         SurfacePoint s = surfaceAt(ray, hit);
         vec3 local = shadePhong(s, -ray.direction);
+        storySurface(s.normal, s.kd, s.ks, s.shininess, local, throughput);
         if (!sceneHasMirrors || all(equal(s.ks, vec3(0.0))) || bounce >= maxBounces)
-            return color + throughput * local;
+            return storyLast(all(equal(s.ks, vec3(0.0))) ? STORY_NEXT_NO_MIRROR : STORY_NEXT_DEPTH,
+                             throughput, local, color + throughput * local);
         color += throughput * (1.0 - s.ks) * local;
         throughput *= s.ks;
+        storyReflect(color, throughput);
         // Nothing further can contribute: same result, fewer rays.
         if (all(equal(throughput, vec3(0.0)))) return color;
         ray = reflectedRay(ray, s);
@@ -149,6 +163,8 @@ void main() {
                   gl_WorkGroupID.xy * uvec2(WORKGROUP_SIZE_X, WORKGROUP_SIZE_Y) +
                   pixelInTile(gl_LocalInvocationID.xy);
     if (any(greaterThanEqual(pixel, params.image.xy))) return;
+    // The --pixel kernel is dispatched with its pixel first: only that invocation records.
+    if (recordPixel && any(notEqual(pixel, params.dispatch.xy))) return;
 
     // Samples first..end-1 of n. One pass (dispatch.w == 0, headless) sums all n here; the
     // window's progressive view adds dispatch.w of them per dispatch to the running sum in
@@ -162,7 +178,13 @@ void main() {
     vec3 sum = vec3(0.0);
     if (progressive && first != 0u) sum = accumulation[slot].rgb;
     for (uint s = first; s < end; ++s) {
-        sum += clamp(traceRay(cameraRay(pixel, sampleOffset(pixel, s, samples))), 0.0, 1.0);
+        storyStartSample(s, sampleOffset(pixel, s, samples));
+        sum += clamp(storySampleColor(traceRay(cameraRay(pixel, sampleOffset(pixel, s, samples)))),
+                     0.0, 1.0);
+    }
+    if (recordPixel) { // the story, not the image
+        storyPixel(sum / float(end), samples);
+        return;
     }
     if (progressive) accumulation[slot] = vec4(sum, 0.0);
     // floor(c * 255 + 0.5) here, stored as k / 255: the UNORM conversion then gives exactly k

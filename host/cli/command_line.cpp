@@ -86,6 +86,8 @@ std::string commandLine(const Options& options) {
     addCount("--bench", options.benchFrames, 0);
     addCount("--bench-window", options.benchWindowFrames, 0);
     addCount("--region-size", options.regionSide, 0);
+    if (options.pixelGiven)
+        add("--pixel", std::to_string(options.pixel.x) + "," + std::to_string(options.pixel.y));
     addPath("--dump-shaders", options.dumpShadersTo);
     addSwitch("--validate", options.validate);
     addSwitch("--no-cache", !options.useCache);

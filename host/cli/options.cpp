@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <functional>
+#include <string_view>
 #include <vector>
 
 namespace {
@@ -56,6 +57,22 @@ glm::dvec3 parseVector(const std::string& flag, const std::string& text) {
     if (values.size() != 3)
         throw UsageError(flag + " expects three numbers X,Y,Z, got '" + text + "'");
     return {values[0], values[1], values[2]};
+}
+
+// --pixel X,Y: a column and a row, whole numbers (checked against the image size later).
+glm::uvec2 parsePixel(const std::string& flag, const std::string& text) {
+    const std::size_t comma = text.find(',');
+    auto whole = [&](std::string_view part, std::uint32_t& value) {
+        auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), value);
+        return !part.empty() && error == std::errc() && end == part.data() + part.size();
+    };
+    glm::uvec2 pixel{0};
+    if (comma == std::string::npos || !whole(std::string_view(text).substr(0, comma), pixel.x) ||
+        !whole(std::string_view(text).substr(comma + 1), pixel.y))
+        throw UsageError(flag +
+                         " expects a pixel X,Y (column and row, whole numbers from 0), got '" +
+                         text + "'");
+    return pixel;
 }
 
 // One of names' values by its name; the message lists them ("grid, stratified or r2").
@@ -129,6 +146,8 @@ std::string usageText() {
            "  --camera-target X,Y,Z point looked at (default 0,0,-1 from the eye: down -z)\n"
            "  --camera-up X,Y,Z     up direction (default 0,1,0)\n"
            "  --bench N             render N frames headless after a warm-up, print JSON timings\n"
+           "  --pixel X,Y           print the ray tree of pixel X,Y (column, row) as the kernel\n"
+           "                        traced it, as JSON on stdout; headless; alone without -o\n"
            "  --device NAME|INDEX   use this Vulkan device (default: a real GPU before a CPU one)\n"
            "  --threads N           worker threads of a CPU device (lavapipe; default: one per\n"
            "                        core)\n"
@@ -227,6 +246,9 @@ Options parseOptions(int argc, const char* const* argv) {
             options.generalKernel = true;
         } else if (arg == "--storage-reads") {
             options.storageReads = true;
+        } else if (arg == "--pixel") {
+            options.pixel = parsePixel(arg, value());
+            options.pixelGiven = true;
         } else if (parseKernelOption(arg, value, options.kernel)) {
         } else if (arg.size() > 1 && arg[0] == '-') {
             throw UsageError("unknown option '" + arg + "' (see --help)");
@@ -247,6 +269,18 @@ Options parseOptions(int argc, const char* const* argv) {
         throw UsageError("no scene file given (see --help)");
     if (options.forceWindow && (!options.outputPath.empty() || options.benchFrames > 0))
         throw UsageError("--window cannot be combined with -o or --bench, which render headless");
+    if (options.pixelGiven &&
+        (options.pixel.x >= options.width || options.pixel.y >= options.height))
+        throw UsageError("--pixel " + std::to_string(options.pixel.x) + "," +
+                         std::to_string(options.pixel.y) + " lies outside the " +
+                         std::to_string(options.width) + "x" + std::to_string(options.height) +
+                         " image (columns 0 to " + std::to_string(options.width - 1) +
+                         ", rows 0 to " + std::to_string(options.height - 1) + ")");
+    if (options.pixelGiven &&
+        (options.forceWindow || options.benchFrames > 0 || options.benchWindowFrames > 0))
+        throw UsageError("--pixel renders headless and cannot be combined with --window, --bench "
+                         "or --bench-window (the window's I key prints the story of the pixel "
+                         "under the mouse)");
     if (options.benchWindowFrames > 0 && (!options.outputPath.empty() || options.benchFrames > 0))
         throw UsageError(
             "--bench-window cannot be combined with -o or --bench, which render headless");

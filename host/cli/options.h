@@ -45,6 +45,10 @@ struct Options {
         kernel; // --sampler, --seed, --precision, --sphere-test, --triangle-test, --offset
     bool generalKernel = false; // --general-kernel (hidden, for tools/kernel_costs)
     bool storageReads = false;  // --storage-reads (hidden): the kernel's fallback read path
+    // --pixel X,Y: print the pixel story of column X, row Y as JSON (docs/pixel_story.md);
+    // headless, and alone (no PNG) without -o.
+    bool pixelGiven = false;
+    glm::uvec2 pixel{0};
 
     bool operator==(const Options&) const = default; // commandLine's round trip is tested by it
 };

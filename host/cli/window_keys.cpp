@@ -1,5 +1,7 @@
 #include "cli/window_keys.h"
 
+#include <cmath>
+
 namespace {
 
 std::string sentence(const WindowKey& key) {
@@ -30,4 +32,17 @@ std::string windowKeysMarkdown() {
         table += "| " + std::string(key.keys) + " | " + effect + " |\n";
     }
     return table;
+}
+
+std::optional<glm::uvec2> pixelUnderCursor(double cursorX, double cursorY, int windowWidth,
+                                           int windowHeight, std::uint32_t imageWidth,
+                                           std::uint32_t imageHeight) {
+    if (windowWidth <= 0 || windowHeight <= 0 || imageWidth == 0 || imageHeight == 0)
+        return std::nullopt;
+    // Pixel k covers [k, k + 1) image units; GLFW reports the cursor in window units.
+    const double x = std::floor(cursorX * double(imageWidth) / double(windowWidth));
+    const double y = std::floor(cursorY * double(imageHeight) / double(windowHeight));
+    if (!(x >= 0 && y >= 0 && x < double(imageWidth) && y < double(imageHeight)))
+        return std::nullopt;
+    return glm::uvec2(std::uint32_t(x), std::uint32_t(y));
 }

@@ -4,7 +4,11 @@
 // handles them; a test checks that it handles exactly the keys listed here.
 #pragma once
 
+#include <glm/glm.hpp>
+
 #include <array>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -14,7 +18,7 @@ struct WindowKey {
     std::string_view detail; // more, for the docs' table only; may be empty
 };
 
-inline constexpr std::array<WindowKey, 10> kWindowKeys = {{
+inline constexpr std::array<WindowKey, 11> kWindowKeys = {{
     {"Esc or Q", "quits", ""},
     {"R", "reloads the scene file and the shaders", ""},
     {"P", "writes a screenshot PNG once refinement is done",
@@ -27,6 +31,9 @@ inline constexpr std::array<WindowKey, 10> kWindowKeys = {{
     {"right drag", "looks around", "(turns the camera in place)"},
     {"W/A/S/D", "fly forward, left, back and right", "while held, across the scene in about 4 s"},
     {"Space/Left Shift", "fly up and down", "while held"},
+    {"I", "prints the story of the pixel under the mouse",
+     "on stdout: its ray tree as the kernel traced it, as JSON, at the window's sample target, "
+     "as `--pixel X,Y` prints it headless (docs/pixel_story.md)"},
 }};
 
 // --help's section: a heading, then one "  KEYS EFFECT" line per entry.
@@ -37,3 +44,11 @@ std::string windowKeysLine();
 
 // A markdown table of every entry, with its detail.
 std::string windowKeysMarkdown();
+
+// The I key's pixel: the image pixel (column, row) under the cursor at (cursorX, cursorY) in
+// window coordinates, the window being windowWidth x windowHeight screen units and its image
+// imageWidth x imageHeight pixels (more than the window's units on a high-density display).
+// None when the cursor is outside the window or either size is zero.
+std::optional<glm::uvec2> pixelUnderCursor(double cursorX, double cursorY, int windowWidth,
+                                           int windowHeight, std::uint32_t imageWidth,
+                                           std::uint32_t imageHeight);

@@ -16,7 +16,7 @@ namespace {
 constexpr std::uint32_t kMaxDispatchSide = 1024;
 
 void createDescriptors(Renderer& renderer, const Context& context) {
-    constexpr std::uint32_t texelBuffers = BINDING_COUNT - BINDING_FIRST_TEXEL_BUFFER;
+    constexpr std::uint32_t texelBuffers = BINDING_TEXEL_BUFFER_END - BINDING_FIRST_TEXEL_BUFFER;
     VkDescriptorPoolSize sizes[] = {
         {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, BINDING_COUNT - 1 - texelBuffers},
@@ -38,7 +38,9 @@ void createDescriptors(Renderer& renderer, const Context& context) {
     // resizeOutput.
     std::vector<VkWriteDescriptorSet> writes;
     for (std::uint32_t binding = 0; binding < BINDING_COUNT; ++binding) {
-        if (binding == BINDING_OUTPUT_IMAGE || binding == BINDING_ACCUMULATION) continue;
+        if (binding == BINDING_OUTPUT_IMAGE || binding == BINDING_ACCUMULATION ||
+            binding == BINDING_PIXEL_STORY)
+            continue;
         VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         write.dstSet = renderer.descriptorSet;
         write.dstBinding = binding;
@@ -51,8 +53,33 @@ void createDescriptors(Renderer& renderer, const Context& context) {
             write.pBufferInfo = &renderer.scene.ranges[binding];
         writes.push_back(write);
     }
+    // The story's buffer: only the recording kernel writes it, but every kernel declares it.
+    const VkDescriptorBufferInfo storyInfo{renderer.pixelStory.buffer, 0, VK_WHOLE_SIZE};
+    VkWriteDescriptorSet storyWrite{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    storyWrite.dstSet = renderer.descriptorSet;
+    storyWrite.dstBinding = BINDING_PIXEL_STORY;
+    storyWrite.descriptorCount = 1;
+    storyWrite.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    storyWrite.pBufferInfo = &storyInfo;
+    writes.push_back(storyWrite);
     vkUpdateDescriptorSets(context.device, static_cast<std::uint32_t>(writes.size()), writes.data(),
                            0, nullptr);
+}
+
+// Slot k's file index and line, from the packer's leaf order.
+SlotSources slotSources(const Scene& scene, const PackedScene& packed) {
+    SlotSources sources;
+    for (std::uint32_t index : packed.sphereOrder) {
+        sources.sphereIndex.push_back(index);
+        sources.sphereLine.push_back(scene.spheres[index].line);
+    }
+    for (std::uint32_t index : packed.triangleOrder) {
+        sources.triangleIndex.push_back(index);
+        sources.triangleLine.push_back(scene.triangles[index].line);
+    }
+    for (const Light& light : scene.lights)
+        sources.lightLine.push_back(light.line);
+    return sources;
 }
 
 gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t dispatchX,
@@ -121,6 +148,7 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
                                "(createDevice needFloat64)");
     PackedScene packed = packScene(scene, settings.acceleration, precision);
     std::fprintf(stderr, "%s\n", accelerationSummary(packed.hierarchy).c_str());
+    renderer.sources = slotSources(scene, packed);
     renderer.specialization = traceSpecialization(packed, settings);
     renderer.scene = uploadScene(context, packed, renderer.specialization.texelReads);
     packed = PackedScene{}; // the GPU holds it now
@@ -136,6 +164,8 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
         std::fprintf(stderr, "Scene memory: %llu bytes, %.1f bytes per primitive\n",
                      static_cast<unsigned long long>(renderer.scene.bytes),
                      double(renderer.scene.bytes) / double(primitives));
+    renderer.pixelStory =
+        createHostBuffer(context, sizeof(gpu::GpuPixelStory), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     createDescriptors(renderer, context);
     if (context.timestampsSupported) {
         VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
@@ -258,6 +288,20 @@ void recordTrace(const Renderer& renderer, VkCommandBuffer commands, SampleRange
     recordTraceEnd(renderer, commands);
 }
 
+void recordPixelStoryTrace(const Renderer& renderer, VkCommandBuffer commands, std::uint32_t x,
+                           std::uint32_t y) {
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.storyPipeline.pipeline);
+    // The story pipeline's set layout is defined exactly as the trace pipeline's, so the
+    // renderer's descriptor set is compatible with it.
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.storyPipeline.layout,
+                            0, 1, &renderer.descriptorSet, 0, nullptr);
+    // The pixel first in the dispatch: the invocation (0, 0) of workgroup (0, 0) traces it.
+    const gpu::GpuFrameParams params = frameParams(renderer, x, y, {});
+    vkCmdPushConstants(commands, renderer.storyPipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                       sizeof(params), &params);
+    vkCmdDispatch(commands, 1, 1, 1);
+}
+
 double lastTraceGpuMilliseconds(const Renderer& renderer, const Context& context) {
     if (!renderer.timestampPool) return -1.0;
     std::uint64_t ticks[2] = {};
@@ -271,6 +315,8 @@ void destroyRenderer(Renderer& renderer, const Context& context) {
     if (context.device) vkDeviceWaitIdle(context.device);
     destroyImage(context, renderer.outputImage);
     destroyBuffer(context, renderer.accumulation);
+    destroyBuffer(context, renderer.pixelStory);
+    destroyTracePipeline(context, renderer.storyPipeline);
     if (renderer.timestampPool) vkDestroyQueryPool(context.device, renderer.timestampPool, nullptr);
     if (renderer.descriptorPool)
         vkDestroyDescriptorPool(context.device, renderer.descriptorPool, nullptr);

@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <vector>
 
 struct RenderSettings {
     std::uint32_t width = 640;
@@ -46,6 +47,14 @@ struct SampleRange {
     std::uint32_t count = 0;
 };
 
+// Where each primitive slot of the kernel (leaf order) comes from in the scene file: its
+// index among the file's spheres (triangles) and the line of its keyword; and each light's
+// line. Kept on the host for the pixel story (host/render/pixel_story.h); never uploaded.
+struct SlotSources {
+    std::vector<std::uint32_t> sphereIndex, triangleIndex;
+    std::vector<std::int64_t> sphereLine, triangleLine, lightLine;
+};
+
 struct Renderer {
     TracePipeline pipeline;
     GpuScene scene;
@@ -60,6 +69,11 @@ struct Renderer {
     VkQueryPool timestampPool = VK_NULL_HANDLE; // two timestamps around the trace
     RenderSettings settings;
     TraceSpecialization specialization; // what the kernel was compiled for (--bench reports it)
+    // The pixel story: BINDING_PIXEL_STORY's host-visible GpuPixelStory, and the recording
+    // kernel that writes it, compiled on first use (host/render/pixel_story.h).
+    Buffer pixelStory;
+    TracePipeline storyPipeline;
+    SlotSources sources;
 };
 
 // Packs and uploads the scene, compiles the kernel and creates the output image. The
@@ -95,6 +109,11 @@ void recordTraceBegin(const Renderer& renderer, VkCommandBuffer commands);
 void recordTraceRegion(const Renderer& renderer, VkCommandBuffer commands,
                        const TraceRegion& region);
 void recordTraceEnd(const Renderer& renderer, VkCommandBuffer commands);
+
+// Records the recording kernel (renderer.storyPipeline, which must exist) for pixel (x, y)
+// alone, all its samples in one pass; the output image must be in VK_IMAGE_LAYOUT_GENERAL.
+void recordPixelStoryTrace(const Renderer& renderer, VkCommandBuffer commands, std::uint32_t x,
+                           std::uint32_t y);
 
 // The GPU time of the last finished recordTraceRegion from the timestamp queries, or a
 // negative value when the device has no timestamps.

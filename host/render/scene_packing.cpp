@@ -298,6 +298,8 @@ PackedScene packScene(const Scene& scene, Acceleration acceleration, Precision p
     report.buildMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     applyLeafOrder(packed, bvh);
+    packed.sphereOrder = std::move(bvh.sphereOrder);
+    packed.triangleOrder = std::move(bvh.triangleOrder);
     report.primitives = packed.spheres.size() + packed.triangles.size();
     report.nodes = bvh.nodes.size();
     report.depth = bvh.depth;

@@ -45,6 +45,11 @@ struct PackedScene {
     std::vector<glm::dvec4> spheres64;
     std::vector<glm::dvec4> vertexPositions64;
     HierarchyReport hierarchy; // packScene only
+    // packScene only: slot k of the sphere (triangle) arrays holds the file's sphere
+    // (triangle) number sphereOrder[k] (triangleOrder[k]). Kept on the host, for the pixel
+    // story's file indices and lines (host/render/pixel_story.h); never uploaded.
+    std::vector<std::uint32_t> sphereOrder;
+    std::vector<std::uint32_t> triangleOrder;
 };
 
 // What the GPU needs: the scene packed in the hierarchy's leaf order, with the hierarchy

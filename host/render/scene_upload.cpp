@@ -44,7 +44,7 @@ constexpr TexelView kTexelViews[] = {
     {BINDING_SPHERE_MATERIAL_TEXELS, BINDING_SPHERE_MATERIALS, VK_FORMAT_R32_UINT, 4, false},
     {BINDING_LIGHT_TEXELS, BINDING_LIGHTS, VK_FORMAT_R32G32B32A32_SFLOAT, 16, false},
 };
-static_assert(std::size(kTexelViews) == BINDING_COUNT - BINDING_FIRST_TEXEL_BUFFER);
+static_assert(std::size(kTexelViews) == BINDING_TEXEL_BUFFER_END - BINDING_FIRST_TEXEL_BUFFER);
 
 VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
     return (value + alignment - 1) / alignment * alignment;

@@ -17,7 +17,7 @@ struct GpuScene {
     glm::vec4 ambient{0.0f};
     // Uniform texel buffer views for BINDING_FIRST_TEXEL_BUFFER on, always valid: over the
     // hot arrays when texelReads, else over the zeroed slot (the kernel then never reads them).
-    VkBufferView texelViews[BINDING_COUNT - BINDING_FIRST_TEXEL_BUFFER]{};
+    VkBufferView texelViews[BINDING_TEXEL_BUFFER_END - BINDING_FIRST_TEXEL_BUFFER]{};
     bool texelReads = false;      // the kernel reads the hot arrays through texelViews
     std::string storageReadsNote; // why not, when an array exceeds maxTexelBufferElements
 };

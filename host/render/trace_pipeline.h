@@ -29,10 +29,12 @@ struct TraceSpecialization {
     VkBool32 bakedSpheres = VK_FALSE;
     std::uint32_t bakedSphereCount = 0;
     std::uint32_t bakedLightCount = 0;
+    // The recording kernel of --pixel (host/render/pixel_story.h): one pixel, into the story.
+    VkBool32 recordPixel = VK_FALSE;
 };
 
 // What each binding of shaders/shared.h is: the output image, a storage buffer, or one of
-// the uniform texel buffers from BINDING_FIRST_TEXEL_BUFFER on.
+// the uniform texel buffers from BINDING_FIRST_TEXEL_BUFFER to BINDING_TEXEL_BUFFER_END.
 VkDescriptorType bindingDescriptorType(std::uint32_t binding);
 
 // The method choices' part of the specialization (the scene's part is left as given).

@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -15,10 +16,14 @@ struct Material {
     double shininess = 0.0;   // Phong exponent, "shi:"
 };
 
+// Each object's `line` is where its keyword stands in the file (1-based; 0 when not read
+// from a file), for the pixel story's messages; the GPU never sees it. 64 bits, so the
+// structs hold no padding (the fuzz test compares their bytes).
 struct Sphere {
     glm::dvec3 center{0.0};
     double radius = 0.0;
     Material material;
+    std::int64_t line = 0;
 };
 
 struct Vertex {
@@ -29,11 +34,13 @@ struct Vertex {
 
 struct Triangle {
     Vertex vertices[3];
+    std::int64_t line = 0;
 };
 
 struct Light {
     glm::dvec3 position{0.0};
     glm::dvec3 color{0.0};
+    std::int64_t line = 0;
 };
 
 struct Scene {

@@ -52,8 +52,14 @@ void appendWarnings(Scene& scene, const Reader& reader, int firstLine) {
                                  "warning: " + warning.message);
 }
 
-template <typename T> void appendAll(std::vector<T>& into, const std::vector<T>& from) {
+// Appends from's objects, their lines (counted from a reader's first line) made the
+// file's: a reader that started at line firstLine counted it as line 1.
+template <typename T>
+void appendAll(std::vector<T>& into, const std::vector<T>& from, int firstLine) {
+    const std::size_t start = into.size();
     into.insert(into.end(), from.begin(), from.end());
+    for (std::size_t k = start; k < into.size(); ++k)
+        into[k].line += firstLine - 1;
 }
 
 // Joins the scenes of readers that read consecutive parts of the text, in order.
@@ -71,9 +77,9 @@ Scene joinScenes(const std::vector<std::pair<Reader*, int>>& parts) {
     for (std::size_t i = 0; i < parts.size(); ++i) {
         const auto& [reader, firstLine] = parts[i];
         if (i > 0) {
-            appendAll(scene.spheres, reader->scene.spheres);
-            appendAll(scene.triangles, reader->scene.triangles);
-            appendAll(scene.lights, reader->scene.lights);
+            appendAll(scene.spheres, reader->scene.spheres, firstLine);
+            appendAll(scene.triangles, reader->scene.triangles, firstLine);
+            appendAll(scene.lights, reader->scene.lights, firstLine);
         }
         appendWarnings(scene, *reader, firstLine);
     }

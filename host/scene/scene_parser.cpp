@@ -264,13 +264,18 @@ void Reader::readObject() {
     if (token.text.empty())
         fail(token.line, "the header says " + objects(claimedCount) + " but the file ends after " +
                              std::to_string(objectsRead));
-    if (equalsIgnoreCase(token.text, "sphere"))
+    // Each object keeps its keyword's line, counted from where this reader started
+    // (joinScenes makes it the file's line).
+    if (equalsIgnoreCase(token.text, "sphere")) {
         scene.spheres.push_back(readSphere());
-    else if (equalsIgnoreCase(token.text, "triangle"))
+        scene.spheres.back().line = token.line;
+    } else if (equalsIgnoreCase(token.text, "triangle")) {
         scene.triangles.push_back(readTriangle(token.line));
-    else if (equalsIgnoreCase(token.text, "light"))
+        scene.triangles.back().line = token.line;
+    } else if (equalsIgnoreCase(token.text, "light")) {
         scene.lights.push_back(readLight());
-    else
+        scene.lights.back().line = token.line;
+    } else
         fail(token.line, "unknown object keyword " + quote(token.text) +
                              " (expected 'sphere', 'triangle' or 'light')");
     ++objectsRead;

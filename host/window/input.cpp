@@ -56,6 +56,9 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     case GLFW_KEY_V:
         toggleVsync(viewer);
         break;
+    case GLFW_KEY_I:
+        viewer.storyPending = true; // after the frame: the output image is traced by then
+        break;
     case GLFW_KEY_C:
     case GLFW_KEY_HOME:
         viewer.pivotPlaced = false;

@@ -64,6 +64,7 @@ struct Viewer {
     bool presentNeeded = true;  // the window does not show the output image
     bool vsync = true;
     bool screenshotPending = false; // P: write it once refinement is done
+    bool storyPending = false;      // I: print the pixel story under the mouse after the frame
     bool continuous = false; // --redraw-continuously: restart the sum every frame (soak test)
 
     // --bench-window N: frames timed after the first.

@@ -18,6 +18,7 @@
 #include "window/input.h"
 #include "window/present.h"
 #include "window/reload.h"
+#include "window/story.h"
 #include "window/viewer.h"
 
 #include <algorithm>
@@ -120,6 +121,7 @@ void runLoop(Viewer& viewer) {
             continue;
         }
         if (viewer.presentNeeded || refining(viewer)) drawFrame(viewer);
+        if (viewer.storyPending) printStoryUnderCursor(viewer); // the image is traced by now
         if (viewer.screenshotPending && !refining(viewer) && !viewer.continuous)
             writeScreenshot(viewer);
         finishBenchIfDone(viewer);

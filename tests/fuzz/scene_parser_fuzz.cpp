@@ -24,11 +24,12 @@
 
 namespace {
 
-// Every struct of a Scene is doubles only, without padding, so comparing their bytes
-// compares the values bit for bit (0.0 and -0.0 differ, as they should).
-static_assert(sizeof(Sphere) == 11 * sizeof(double));
-static_assert(sizeof(Triangle) == 3 * 13 * sizeof(double));
-static_assert(sizeof(Light) == 6 * sizeof(double));
+// Every struct of a Scene is doubles and a 64-bit line only, without padding, so comparing
+// their bytes compares the values bit for bit (0.0 and -0.0 differ, as they should) and
+// the lines of objects read by different chunks.
+static_assert(sizeof(Sphere) == 11 * sizeof(double) + sizeof(std::int64_t));
+static_assert(sizeof(Triangle) == 3 * 13 * sizeof(double) + sizeof(std::int64_t));
+static_assert(sizeof(Light) == 6 * sizeof(double) + sizeof(std::int64_t));
 
 struct Outcome {
     std::optional<Scene> scene;      // set on success

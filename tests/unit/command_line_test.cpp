@@ -93,6 +93,8 @@ std::vector<std::vector<std::string>> optionSets() {
         {"a.scene", "-o", "b.png", "--bench", "3"},
         {"a.scene", "--bench-window", "100000"},
         {"a.scene", "--region-size", "64"},
+        {"a.scene", "--pixel", "0,0"},
+        {"a.scene", "-o", "b.png", "--width", "20", "--height", "10", "--pixel", "19,9"},
         {"--dump-shaders", "dumped shaders"},
         {"--help"},
         {"a.scene", "--validate", "--no-cache", "--progress", "--window", "--redraw-continuously",

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <chrono>
 #include <cmath>
@@ -120,6 +121,27 @@ TEST(SceneParser, KeepsObjectsInFileOrderPerKind) {
     ASSERT_EQ(scene.lights.size(), 2u);
     EXPECT_EQ(scene.spheres[1].radius, 2.0);
     EXPECT_EQ(scene.lights[1].color, glm::dvec3(0.5));
+}
+
+// Each object keeps the line of its keyword (the pixel story names it), whatever the line
+// endings and blank lines, and when the text is split among threads.
+TEST(SceneParser, ObjectsKeepTheLineOfTheirKeyword) {
+    const std::string text = header(4) + "\n" + lightText + sphereText + "\r\n\r\n" + triangleText +
+                             "\n\n\n" + replaced(sphereText, "rad: 1", "rad: 2");
+    const auto lineOf = [&](std::size_t at) {
+        return std::int64_t(1 + std::count(text.begin(), text.begin() + at, '\n'));
+    };
+    const std::size_t light = text.find("light"), sphere = text.find("sphere");
+    const std::size_t triangle = text.find("triangle"), second = text.find("sphere", sphere + 1);
+    for (unsigned threads : {1u, 2u, 3u, 5u}) {
+        const Scene scene = parseScene(text, "t.scene", {threads, 1});
+        ASSERT_EQ(scene.spheres.size(), 2u);
+        EXPECT_EQ(scene.lights[0].line, lineOf(light)) << threads;
+        EXPECT_EQ(scene.spheres[0].line, lineOf(sphere)) << threads;
+        EXPECT_EQ(scene.triangles[0].line, lineOf(triangle)) << threads;
+        EXPECT_EQ(scene.spheres[1].line, lineOf(second)) << threads;
+    }
+    EXPECT_EQ(lineOf(light), 4); // the header's two lines, then a blank one
 }
 
 TEST(SceneParser, KeywordsAndKeysAreCaseInsensitive) {
@@ -764,18 +786,19 @@ std::string outcome(std::string_view text, const SceneParseOptions& options) {
     };
     out << scene.ambient.x << scene.ambient.y << scene.ambient.z << '\n';
     for (const Sphere& s : scene.spheres) {
-        out << "S" << s.center.x << s.center.y << s.center.z << s.radius;
+        out << "S@" << s.line << s.center.x << s.center.y << s.center.z << s.radius;
         material(s.material);
     }
     for (const Triangle& t : scene.triangles)
         for (const Vertex& v : t.vertices) {
+            out << "@" << t.line;
             out << "V" << v.position.x << v.position.y << v.position.z << v.normal.x << v.normal.y
                 << v.normal.z;
             material(v.material);
         }
     for (const Light& l : scene.lights)
-        out << "L" << l.position.x << l.position.y << l.position.z << l.color.x << l.color.y
-            << l.color.z;
+        out << "L@" << l.line << l.position.x << l.position.y << l.position.z << l.color.x
+            << l.color.y << l.color.z;
     for (const std::string& warning : scene.warnings)
         out << '\n' << warning;
     return out.str();

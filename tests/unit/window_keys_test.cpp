@@ -93,4 +93,38 @@ TEST(WindowKeys, TheInputCodeHandlesExactlyTheListedKeys) {
                                         << ", which the table in host/cli/window_keys.h omits";
 }
 
+// No key or gesture is listed twice: a new binding (I, the pixel story) took no old one.
+TEST(WindowKeys, EachKeyIsListedOnce) {
+    std::multiset<std::string> names;
+    for (const WindowKey& entry : kWindowKeys) {
+        std::string keys = std::regex_replace(std::string(entry.keys), std::regex(" or "), "/");
+        std::stringstream list(keys);
+        for (std::string key; std::getline(list, key, '/');)
+            names.insert(key);
+    }
+    for (const std::string& name : names)
+        EXPECT_EQ(names.count(name), 1u) << name << " is bound twice";
+    EXPECT_EQ(names.count("I"), 1u);
+}
+
+// The I key's pixel: window units scaled to image pixels, floor, nothing outside.
+TEST(WindowKeys, PixelUnderCursorMapsWindowUnitsToImagePixels) {
+    using P = std::optional<glm::uvec2>;
+    EXPECT_EQ(pixelUnderCursor(0.0, 0.0, 640, 480, 640, 480), P(glm::uvec2(0, 0)));
+    EXPECT_EQ(pixelUnderCursor(10.7, 20.2, 640, 480, 640, 480), P(glm::uvec2(10, 20)));
+    EXPECT_EQ(pixelUnderCursor(639.99, 479.99, 640, 480, 640, 480), P(glm::uvec2(639, 479)));
+    // A high-density display: two image pixels per window unit.
+    EXPECT_EQ(pixelUnderCursor(100.5, 50.25, 320, 240, 640, 480), P(glm::uvec2(201, 100)));
+    // Fewer pixels than units (an image not yet resized to the window).
+    EXPECT_EQ(pixelUnderCursor(639.0, 0.0, 640, 480, 320, 240), P(glm::uvec2(319, 0)));
+    // Outside the window (GLFW reports the cursor there too while a button is held).
+    EXPECT_EQ(pixelUnderCursor(640.0, 10.0, 640, 480, 640, 480), std::nullopt);
+    EXPECT_EQ(pixelUnderCursor(10.0, 480.0, 640, 480, 640, 480), std::nullopt);
+    EXPECT_EQ(pixelUnderCursor(-0.5, 10.0, 640, 480, 640, 480), std::nullopt);
+    EXPECT_EQ(pixelUnderCursor(10.0, -3.0, 640, 480, 640, 480), std::nullopt);
+    // A minimised window or an empty image.
+    EXPECT_EQ(pixelUnderCursor(0.0, 0.0, 0, 0, 640, 480), std::nullopt);
+    EXPECT_EQ(pixelUnderCursor(0.0, 0.0, 640, 480, 0, 480), std::nullopt);
+}
+
 } // namespace

@@ -2,6 +2,7 @@
 # The progressive view under Xvfb: with --spp N the window refines to exactly the headless
 # --spp N image (tolerance 0), also from a moved camera; P writes a PNG identical to it and
 # prints a headless command that renders it again;
+# I prints the story of the pixel under the mouse, the JSON of headless --pixel;
 # V recreates the swapchain; a mouse drag moves the camera and C and Home reset it to the
 # default camera; Q quits with status 0 and the validation layer stays silent.
 #
@@ -61,6 +62,24 @@ run_inside_xvfb() {
         fi
     else
         fail "P wrote no screenshot (log $log)"
+    fi
+
+    # I prints the story of the pixel under the mouse (docs/pixel_story.md): the very JSON
+    # that headless --pixel prints for that pixel at the same settings.
+    env -u DISPLAY timeout 120 "$raytracer" "$scene" --pixel 50,40 --width $WIDTH --height $HEIGHT --spp $SPP \
+        "${CAMERA[@]}" > story-headless.json 2> story-headless.log || fail "headless --pixel 50,40 (log story-headless.log)"
+    timeout 10 xdotool mousemove --window "$id" 50 40 || true
+    sleep 0.3
+    press_key "$id" i
+    if wait_for_log "$pid" "$log" "Pixel story: pixel 50,40 printed on stdout" 1 30; then
+        sed -n '/^{"renderer": "gpu"/,/"pixel_8bit"/p' "$log" > story-window.json
+        if [[ -s story-headless.json ]] && cmp -s story-headless.json story-window.json; then
+            pass "I printed the story of pixel 50,40, identical to headless --pixel 50,40"
+        else
+            fail "I: the window's story (story-window.json) differs from headless --pixel (story-headless.json)"
+        fi
+    else
+        fail "I printed no story of pixel 50,40 (log $log)"
     fi
 
     press_key "$id" v

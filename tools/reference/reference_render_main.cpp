@@ -1,5 +1,6 @@
 // reference_render SCENE -o out.png [options]: the CPU reference renderer as a tool.
 #include "reference_renderer.h"
+#include "reference_story.h"
 #include "scene/scene_loader.h"
 #include "tool_arguments.h"
 
@@ -18,7 +19,7 @@ const char* const usage =
     "usage: reference_render SCENE -o OUT.png [--width W] [--height H] [--depth D]\n"
     "                        [--spp N] [--background R,G,B] [--fov DEG] [--truncate]\n"
     "                        [--threads N] [--camera-pos X,Y,Z] [--camera-target X,Y,Z]\n"
-    "                        [--camera-up X,Y,Z]\n"
+    "                        [--camera-up X,Y,Z] [--pixel X,Y]\n"
     "Renders SCENE with the double-precision CPU reference (the model of docs/model.md).\n"
     "  --width W --height H   image size, default 640 480\n"
     "  --depth D              reflection bounces, default 5\n"
@@ -29,7 +30,9 @@ const char* const usage =
     "  --threads N            worker threads, default: one per hardware thread\n"
     "  --camera-pos X,Y,Z     eye position, default 0,0,0\n"
     "  --camera-target X,Y,Z  point looked at, default 0,0,-1 from the eye\n"
-    "  --camera-up X,Y,Z      up direction, default 0,1,0\n";
+    "  --camera-up X,Y,Z      up direction, default 0,1,0\n"
+    "  --pixel X,Y            print pixel X,Y's ray tree as JSON on stdout, the fields of\n"
+    "                         Raytracer --pixel (docs/pixel_story.md); alone without -o\n";
 
 using tool_arguments::parseCount;
 using tool_arguments::parseFov;
@@ -41,6 +44,20 @@ glm::dvec3 parseColor(std::string_view option, std::string_view text) {
     return parseTriple(option, text, false);
 }
 
+// --pixel X,Y: a column and a row, whole numbers from 0.
+glm::ivec2 parsePixel(std::string_view option, std::string_view text) {
+    const std::size_t comma = text.find(',');
+    if (comma == std::string_view::npos)
+        throw UsageError(std::string(option) + " expects a pixel X,Y, got '" + std::string(text) +
+                         "'");
+    const glm::ivec2 pixel(parseNumber<int>(option, text.substr(0, comma)),
+                           parseNumber<int>(option, text.substr(comma + 1)));
+    if (pixel.x < 0 || pixel.y < 0)
+        throw UsageError(std::string(option) + " expects a pixel X,Y from 0,0, got '" +
+                         std::string(text) + "'");
+    return pixel;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -48,6 +65,8 @@ int main(int argc, char** argv) {
     ReferenceSettings settings;
     int threads = 0;
     bool targetGiven = false; // else the target follows --camera-pos: looking down -z
+    bool pixelGiven = false;
+    glm::ivec2 pixel(0);
     try {
         for (int k = 1; k < argc; ++k) {
             const std::string_view arg = argv[k];
@@ -83,6 +102,9 @@ int main(int argc, char** argv) {
                 targetGiven = true;
             } else if (arg == "--camera-up") {
                 settings.cameraUp = parseTriple(arg, value(), true);
+            } else if (arg == "--pixel") {
+                pixel = parsePixel(arg, value());
+                pixelGiven = true;
             } else if (arg == "--truncate") {
                 settings.truncate = true;
             } else if (arg.starts_with("-")) {
@@ -95,7 +117,12 @@ int main(int argc, char** argv) {
             }
         }
         if (scenePath.empty()) throw UsageError("no scene file given");
-        if (outputPath.empty()) throw UsageError("no output given (-o OUT.png)");
+        if (outputPath.empty() && !pixelGiven)
+            throw UsageError("no output given (-o OUT.png, or --pixel X,Y)");
+        if (pixelGiven && (pixel.x >= settings.width || pixel.y >= settings.height))
+            throw UsageError("--pixel " + std::to_string(pixel.x) + "," + std::to_string(pixel.y) +
+                             " lies outside the " + std::to_string(settings.width) + "x" +
+                             std::to_string(settings.height) + " image");
     } catch (const UsageError& error) {
         std::fprintf(stderr, "reference_render: %s (see --help)\n", error.what());
         return 2;
@@ -105,13 +132,21 @@ int main(int argc, char** argv) {
         const Scene scene = loadScene(scenePath);
         for (const std::string& warning : scene.warnings)
             std::fprintf(stderr, "%s\n", warning.c_str());
-        const auto start = std::chrono::steady_clock::now();
-        const Image8 image = renderReference(scene, settings, threads);
-        const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
-        writePng(outputPath, image);
-        std::fprintf(stderr, "reference_render: %s %dx%d depth %d spp %d in %.2f s\n",
-                     scenePath.c_str(), settings.width, settings.height, settings.depth,
-                     settings.spp, seconds.count());
+        if (!outputPath.empty()) {
+            const auto start = std::chrono::steady_clock::now();
+            const Image8 image = renderReference(scene, settings, threads);
+            const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+            writePng(outputPath, image);
+            std::fprintf(stderr, "reference_render: %s %dx%d depth %d spp %d in %.2f s\n",
+                         scenePath.c_str(), settings.width, settings.height, settings.depth,
+                         settings.spp, seconds.count());
+        }
+        if (pixelGiven) {
+            const ReferenceStory story = referencePixelStory(scene, settings, pixel.x, pixel.y);
+            std::fputs(
+                referenceStoryJson(story, scene, settings, scenePath, pixel.x, pixel.y).c_str(),
+                stdout);
+        }
     } catch (const SceneError& error) {
         std::fprintf(stderr, "%s\n", error.what());
         return 1;

@@ -32,6 +32,7 @@
 // Speed: brute force over every primitive for every ray (no acceleration
 // structure that could itself be wrong), rows spread over std::threads.
 #include "reference_renderer.h"
+#include "reference_story.h"
 
 #include <algorithm>
 #include <atomic>
@@ -203,24 +204,58 @@ SurfacePoint surfaceAt(const World& world, const Ray& ray, const Hit& hit) {
     return p;
 }
 
-// Phong with hard shadows, exactly as docs/model.md's "Shading".
-dvec3 shadeLocal(const World& world, const SurfacePoint& p, dvec3 view, int id) {
+// Primitive id as the pixel story names it: kind, index among its kind, line in the file.
+StoryPrimitive storyPrimitive(const World& world, int id) {
+    if (id == fromEye) return {};
+    if (id < world.sphereCount) return {"sphere", id, world.scene.spheres[std::size_t(id)].line};
+    const int index = id - world.sphereCount;
+    return {"triangle", index, world.scene.triangles[std::size_t(index)].line};
+}
+
+// Phong with hard shadows, exactly as docs/model.md's "Shading". With story, each light's
+// part is recorded there too (the pixel story).
+dvec3 shadeLocal(const World& world, const SurfacePoint& p, dvec3 view, int id,
+                 std::vector<StoryLightRecord>* story = nullptr) {
     const Material& m = p.material;
     dvec3 local = world.scene.ambient; // k_a = 1, once per point
     for (const Light& light : world.scene.lights) {
+        StoryLightRecord entry; // "behind" until found otherwise
+        auto record = [&] {
+            if (story) story->push_back(entry);
+        };
         const dvec3 toLight = light.position - p.position;
         const double distance = glm::length(toLight);
-        if (distance == 0)
-            continue; // a light on the surface itself has no direction; it adds nothing
+        if (distance == 0) {
+            record(); // a light on the surface itself has no direction; it adds nothing
+            continue;
+        }
         const dvec3 l = toLight / distance;
         const double nl = glm::dot(p.normal, l);
-        if (nl <= 0) continue;
-        if (occluded(world, Ray{p.position, l, id}, distance)) continue;
+        entry.nDotL = nl;
+        if (nl <= 0) {
+            record();
+            continue;
+        }
+        if (occluded(world, Ray{p.position, l, id}, distance)) {
+            if (story) { // what blocks it: the nearest surface before the light
+                Hit blocker;
+                blocker.t = distance;
+                closestHit(world, Ray{p.position, l, id}, blocker);
+                entry.result = "blocked";
+                entry.blocker = storyPrimitive(world, blocker.id);
+            }
+            record();
+            continue;
+        }
         const dvec3 r = 2.0 * nl * p.normal - l;
         const double rv = glm::dot(r, view);
         // pow(x, 0) is 1 for x > 0, so shininess 0 gives a full-strength highlight.
         const double highlight = rv > 0 ? std::pow(rv, m.shininess) : 0.0;
-        local += light.color * (m.diffuse * nl + m.specular * highlight);
+        const dvec3 share = light.color * (m.diffuse * nl + m.specular * highlight);
+        local += share;
+        entry.result = "lit";
+        entry.contribution = share;
+        record();
     }
     return local;
 }
@@ -230,23 +265,56 @@ struct Bounce {
     dvec3 ks;
 };
 
+// The pixel story's throughput and colour after each bounce, forwards: bounce k enters
+// the sample with the product of the ks before it. (The reference's own colour is folded
+// from the innermost bounce out; both are the model's recursion.)
+void storyColors(ReferenceStory& story) {
+    dvec3 throughput(1.0), color(0.0);
+    for (StoryBounceRecord& b : story.bounces) {
+        b.throughput = throughput;
+        const bool reflects = std::string(b.next) == "reflect";
+        color += throughput * (reflects ? 1.0 - b.material.specular : dvec3(1.0)) * b.local;
+        throughput *= b.material.specular;
+        b.color = color;
+    }
+}
+
 // colour(ray, bounce) of docs/model.md's "Reflection": the path is followed forwards, then
 // (1 - ks) * local + ks * colour(next) is evaluated from the innermost bounce out,
-// the same arithmetic as the recursion without a stack frame per bounce.
+// the same arithmetic as the recursion without a stack frame per bounce. With story, each
+// bounce is recorded there too (the pixel story).
 dvec3 traceRay(const World& world, const ReferenceSettings& settings, Ray ray,
-               std::vector<Bounce>& path) {
+               std::vector<Bounce>& path, ReferenceStory* story = nullptr) {
     path.clear();
     dvec3 color = settings.background;
     for (int bounce = 0;; ++bounce) {
         Hit hit;
+        StoryBounceRecord* record = nullptr;
+        if (story) {
+            record = &story->bounces.emplace_back();
+            record->origin = ray.origin;
+            record->direction = ray.dir;
+        }
         if (!closestHit(world, ray, hit)) {
             color = settings.background;
+            if (record) record->local = color; // next: "miss"
             break;
         }
         const SurfacePoint p = surfaceAt(world, ray, hit);
         const dvec3 view = -glm::normalize(ray.dir);
-        const dvec3 local = shadeLocal(world, p, view, hit.id);
+        const dvec3 local = shadeLocal(world, p, view, hit.id, record ? &record->lights : nullptr);
         const dvec3 ks = p.material.specular;
+        if (record) {
+            record->hit = storyPrimitive(world, hit.id);
+            record->t = hit.t;
+            if (hit.id >= world.sphereCount) record->barycentric = hit.weights;
+            record->normal = p.normal;
+            record->material = p.material;
+            record->local = local;
+            record->next = ks == dvec3(0.0)           ? "no-mirror"
+                           : bounce >= settings.depth ? "depth"
+                                                      : "reflect";
+        }
         if (bounce >= settings.depth || ks == dvec3(0.0)) {
             color = local;
             break;
@@ -339,6 +407,21 @@ glm::dvec3 traceEyeRay(const Scene& scene, const ReferenceSettings& settings, gl
     const World world = prepareWorld(scene);
     std::vector<Bounce> path;
     return traceRay(world, settings, Ray{dvec3(0.0), dir}, path);
+}
+
+ReferenceStory referencePixelStory(const Scene& scene, const ReferenceSettings& settings, int i,
+                                   int j) {
+    const Camera camera = makeCamera(settings);
+    const World world = prepareWorld(scene);
+    std::vector<Bounce> path;
+    ReferenceStory story;
+    story.sampleOffset = camera.samples.front();
+    story.sampleColor =
+        traceRay(world, settings,
+                 Ray{camera.eye, eyeDirection(camera, i, j, camera.samples.front())}, path, &story);
+    storyColors(story);
+    story.pixelColor = pixelColor(world, settings, camera, i, j, path);
+    return story;
 }
 
 glm::dvec3 tracePixel(const Scene& scene, const ReferenceSettings& settings, int i, int j) {

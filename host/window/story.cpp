@@ -1,0 +1,42 @@
+#include "window/story.h"
+
+#include "cli/window_keys.h"
+#include "render/pixel_story.h"
+
+#include <cstdio>
+#include <exception>
+
+void printStoryUnderCursor(Viewer& viewer) {
+    viewer.storyPending = false;
+    double cursorX = 0, cursorY = 0;
+    int windowWidth = 0, windowHeight = 0;
+    glfwGetCursorPos(viewer.window, &cursorX, &cursorY);
+    glfwGetWindowSize(viewer.window, &windowWidth, &windowHeight);
+    const Image& output = viewer.renderer.outputImage;
+    const std::optional<glm::uvec2> pixel =
+        pixelUnderCursor(cursorX, cursorY, windowWidth, windowHeight, output.width, output.height);
+    if (!pixel) {
+        std::fprintf(stderr, "Pixel story: the mouse is not over the image\n");
+        return;
+    }
+    const RenderSettings& settings = viewer.renderer.settings;
+    try {
+        // Called after the loop's frame, so the output image holds a trace and is in
+        // TRANSFER_SRC_OPTIMAL (the layout each trace leaves it in).
+        const gpu::GpuPixelStory story =
+            tracePixelStory(viewer.renderer, viewer.context, pixel->x, pixel->y,
+                            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+        const StoryHeader header{viewer.options->scenePath.string(),
+                                 pixel->x,
+                                 pixel->y,
+                                 output.width,
+                                 output.height,
+                                 settings.samplesPerPixel,
+                                 settings.depth};
+        std::fputs(pixelStoryJson(story, viewer.renderer.sources, header).c_str(), stdout);
+        std::fflush(stdout);
+        std::fprintf(stderr, "Pixel story: pixel %u,%u printed on stdout\n", pixel->x, pixel->y);
+    } catch (const std::exception& error) { // a --shader-dir kernel that does not compile
+        std::fprintf(stderr, "Pixel story: %s\n", error.what());
+    }
+}
