@@ -27,7 +27,8 @@ enum ExitStatus {
     kInterrupted = 128      // + the signal: 130 for SIGINT (Ctrl-C), 143 for SIGTERM
 };
 
-// Renders headless: either one frame to options.outputPath, or a benchmark.
+// Renders headless: either one frame to options.outputPath (PNG, or PFM/EXR floats), or a
+// benchmark.
 // Before any work, the output file is known to be writable (its .tmp exists) and the
 // image to fit the device; a failure or Ctrl-C afterwards removes the .tmp again.
 void runHeadless(const Options& options, const Scene& scene, const StartupTimes& startup) {
@@ -49,7 +50,10 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
     createDevice(context, options.device, VK_NULL_HANDLE,
                  options.kernel.precision == Precision::Fp64);
     checkImageFits(imageLimitsOf(context), options.width, options.height, true);
-    createRenderer(renderer, context, scene, renderSettingsFrom(options));
+    RenderSettings settings = renderSettingsFrom(options);
+    // -o out.pfm|out.exr: the averages before the 8-bit rounding (docs/accuracy.md).
+    settings.floatOutput = writing && imageFormatOf(options.outputPath) != ImageFormat::Png;
+    createRenderer(renderer, context, scene, settings);
     createHeadlessTarget(target, context, renderer, options.regionSide);
     if (options.benchFrames > 0) {
         std::cout << runBenchmark(context, renderer, target, options, startup) << std::endl;
@@ -57,7 +61,10 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
         renderHeadlessFrame(target, context, renderer,
                             options.progress ? ProgressMode::Always : ProgressMode::Auto);
         throwIfInterrupted();
-        writePng(options.outputPath, readHeadlessImage(target, renderer));
+        if (settings.floatOutput)
+            writeFloatImage(options.outputPath, readHeadlessFloatImage(target, renderer));
+        else
+            writePng(options.outputPath, readHeadlessImage(target, renderer));
     }
 }
 

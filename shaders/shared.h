@@ -76,6 +76,9 @@ using uint = std::uint32_t;
 #define SPEC_BAKED_SPHERES 10
 #define SPEC_BAKED_SPHERE_COUNT 11
 #define SPEC_BAKED_LIGHT_COUNT 12
+// bool: also write each pixel's average before the 8-bit rounding to BINDING_ACCUMULATION
+// (headless, one pass: -o out.pfm|out.exr).
+#define SPEC_FLOAT_OUTPUT 13
 // The most spheres baked in: the closest-hit loop over them is unrolled, one test each.
 #define MAX_BAKED_SPHERES 15u
 #define RAY_OFFSET_FIXED 0u       // 1e-4 along the normal

@@ -29,6 +29,7 @@ struct TraceSpecialization {
     VkBool32 bakedSpheres = VK_FALSE;
     std::uint32_t bakedSphereCount = 0;
     std::uint32_t bakedLightCount = 0;
+    VkBool32 floatOutput = VK_FALSE; // averages also to BINDING_ACCUMULATION (-o .pfm/.exr)
 };
 
 // What each binding of shaders/shared.h is: the output image, a storage buffer, or one of
