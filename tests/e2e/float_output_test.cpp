@@ -176,3 +176,22 @@ TEST(FloatOutput, UnknownExtensionsAreUsageErrors) {
     EXPECT_NE(truncated.err.find("--truncate applies to PNG output only"), std::string::npos)
         << truncated.err;
 }
+
+// The floats pass through a storage buffer of 16 bytes per pixel: lavapipe's
+// maxStorageBufferRange of 128 MiB holds 2896x2896 at most. Beyond it the limit and the
+// device are named before any tracing, and nothing is written.
+TEST(FloatOutput, FloatImageBeyondTheStorageBufferRangeNamesTheLimit) {
+    const std::filesystem::path dir = freshOutputDir("float_output/too_large");
+    const std::string scene =
+        (std::filesystem::path(PROJECT_SCENES_DIR) / "showcase.scene").string();
+    const std::filesystem::path output = dir / "large.exr";
+    const ProcessResult run =
+        runRaytracer({scene, "-o", output.string(), "--width", "4096", "--height", "4096"});
+    EXPECT_EQ(run.exitCode, 1) << run.err;
+    EXPECT_NE(run.err.find("error: a 4096x4096 float image needs 256 MiB, more than this "
+                           "device's maxStorageBufferRange of 128 MiB (llvmpipe"),
+              std::string::npos)
+        << run.err;
+    EXPECT_FALSE(std::filesystem::exists(output));
+    EXPECT_FALSE(std::filesystem::exists(output.string() + ".tmp"));
+}
