@@ -2,6 +2,7 @@
 // lossless ZIP compression, encoded to memory so that the write itself is checked and
 // atomic (writeFileReplacing), and decoded from memory for the same reason.
 #include "base/float_image.h"
+#include "base/scope_guard.h"
 
 #include <tinyexr.h>
 
@@ -24,9 +25,11 @@ namespace {
 // tinyexr's message (which it allocates), or a fallback.
 std::string takeMessage(const char* message, const char* fallback) {
     if (!message) return fallback;
-    std::string text = printableText(message); // it may quote the damaged file
+    std::string text = message;
     FreeEXRErrorMessage(message);
-    return text;
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+        text.pop_back();        // its messages end in a line break
+    return printableText(text); // they may quote the damaged file
 }
 
 } // namespace
@@ -86,31 +89,63 @@ ImageF readExr(const std::filesystem::path& path) {
     // The magic first, so a file that is not EXR at all gets a plain answer.
     if (bytes.size() < 4 || std::memcmp(bytes.data(), "\x76\x2f\x31\x01", 4) != 0)
         fail(path, "not an OpenEXR file (expected the magic number 76 2f 31 01)");
+    const auto* memory = reinterpret_cast<const unsigned char*>(bytes.data());
 
-    float* rgba = nullptr;
-    int width = 0, height = 0;
+    // tinyexr's own LoadEXRFromMemory leaks the header when the pixels fail to decode
+    // (LeakSanitizer saw it on truncated files): here the header and the image are
+    // released on every path.
+    EXRVersion version;
+    if (ParseEXRVersionFromMemory(&version, memory, bytes.size()) != TINYEXR_SUCCESS)
+        fail(path, "not a readable OpenEXR image: damaged version field");
+    if (version.multipart || version.non_image)
+        fail(path, "not a readable OpenEXR image: multi-part and deep files are not read");
+    EXRHeader header;
+    InitEXRHeader(&header);
+    ScopeExit releaseHeader([&] { FreeEXRHeader(&header); });
     const char* message = nullptr;
-    const int status = LoadEXRFromMemory(&rgba, &width, &height,
-                                         reinterpret_cast<const unsigned char*>(bytes.data()),
-                                         bytes.size(), &message);
-    std::unique_ptr<float, void (*)(void*)> pixels(rgba, &std::free);
-    if (status != TINYEXR_SUCCESS || !rgba)
-        fail(path, "not a readable OpenEXR image: " + takeMessage(message, "no reason given"));
-    if (width <= 0 || height <= 0) fail(path, "OpenEXR image has no pixels");
+    if (ParseEXRHeaderFromMemory(&header, &version, memory, bytes.size(), &message) !=
+        TINYEXR_SUCCESS)
+        fail(path, "not a readable OpenEXR image: " + takeMessage(message, "damaged header"));
+    if (header.tiled) fail(path, "not a readable OpenEXR image: tiled files are not read");
+    int channelOf[3] = {-1, -1, -1}; // R, G, B
+    for (int c = 0; c < header.num_channels; ++c) {
+        const char* name = header.channels[c].name;
+        for (int k = 0; k < 3; ++k)
+            if (name[0] == "RGB"[k] && name[1] == '\0') channelOf[k] = c;
+        if (header.pixel_types[c] == TINYEXR_PIXELTYPE_HALF)
+            header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT; // decoded as float
+    }
+    for (int k = 0; k < 3; ++k) {
+        if (channelOf[k] < 0)
+            fail(path, std::string("not a readable OpenEXR image: no ") + "RGB"[k] + " channel");
+        if (header.requested_pixel_types[channelOf[k]] != TINYEXR_PIXELTYPE_FLOAT)
+            fail(path, std::string("not a readable OpenEXR image: channel ") + "RGB"[k] +
+                           " is not half or float");
+    }
+    EXRImage exrImage;
+    InitEXRImage(&exrImage);
+    // A failed load has released what it allocated (freeing it again would be a double
+    // free, AddressSanitizer found), so the image is released only once it has loaded.
+    if (LoadEXRImageFromMemory(&exrImage, &header, memory, bytes.size(), &message) !=
+        TINYEXR_SUCCESS)
+        fail(path, "not a readable OpenEXR image: " + takeMessage(message, "damaged pixels"));
+    ScopeExit releaseImage([&] { FreeEXRImage(&exrImage); });
+    if (exrImage.width <= 0 || exrImage.height <= 0 || !exrImage.images)
+        fail(path, "OpenEXR image has no pixels");
 
     ImageF image;
-    image.width = width;
-    image.height = height;
-    const std::size_t count = std::size_t(width) * std::size_t(height);
+    image.width = exrImage.width;
+    image.height = exrImage.height;
+    const std::size_t count = std::size_t(image.width) * std::size_t(image.height);
     image.rgb.resize(count * 3);
-    for (std::size_t p = 0; p < count; ++p) {
-        for (std::size_t c = 0; c < 3; ++c) {
-            const float value = rgba[p * 4 + c];
-            if (!std::isfinite(value))
-                fail(path, "pixel (" + std::to_string(p % std::size_t(width)) + "," +
-                               std::to_string(p / std::size_t(width)) +
+    for (std::size_t k = 0; k < 3; ++k) {
+        const auto* plane = reinterpret_cast<const float*>(exrImage.images[channelOf[k]]);
+        for (std::size_t p = 0; p < count; ++p) {
+            if (!std::isfinite(plane[p]))
+                fail(path, "pixel (" + std::to_string(p % std::size_t(image.width)) + "," +
+                               std::to_string(p / std::size_t(image.width)) +
                                ") holds a non-finite value");
-            image.rgb[p * 3 + c] = value;
+            image.rgb[p * 3 + k] = plane[p];
         }
     }
     return image;

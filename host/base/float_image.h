@@ -23,7 +23,7 @@ enum class ImageFormat { Png, Pfm, Exr };
 // in any case); nullopt for any other.
 std::optional<ImageFormat> imageFormatOf(const std::filesystem::path& path);
 
-// "an image file name ending in .png, .pfm or .exr": for usage errors.
+// The extensions -o accepts, as usage errors name them.
 inline constexpr const char* kKnownImageExtensions = ".png, .pfm or .exr";
 
 // The 8-bit image the kernel writes for these floats: floor(c * 255 + 0.5) in float
@@ -40,8 +40,8 @@ void writeFloatImage(const std::filesystem::path& path, const ImageF& image);
 void writePfm(const std::filesystem::path& path, const ImageF& image);
 void writeExr(const std::filesystem::path& path, const ImageF& image);
 
-// Reads a PFM (colour "PF" or grey "Pf", either byte order) or a single-part scanline or
-// tiled OpenEXR file with R, G and B channels (as tinyexr's LoadEXR reads them). Throws
+// Reads a PFM (colour "PF" or grey "Pf", either byte order) or a single-part scanline
+// OpenEXR file with half or float R, G and B channels (others are ignored). Throws
 // std::runtime_error "PATH: REASON" for anything else: a wrong magic, a damaged or truncated header
 // or pixel block, a non-finite value.
 ImageF readPfm(const std::filesystem::path& path);
