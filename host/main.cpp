@@ -41,8 +41,8 @@ void printPixelStory(const Options& options, Renderer& renderer, const Context& 
     std::cout << pixelStoryJson(story, renderer.sources, header) << std::flush;
 }
 
-// Renders headless: one frame to options.outputPath, a benchmark, or (--pixel without -o)
-// only the story of one pixel.
+// Renders headless: one frame to options.outputPath (PNG, or PFM/EXR floats), a benchmark,
+// or (--pixel without -o) only the story of one pixel.
 // Before any work, the output file is known to be writable (its .tmp exists) and the
 // image to fit the device; a failure or Ctrl-C afterwards removes the .tmp again.
 void runHeadless(const Options& options, const Scene& scene, const StartupTimes& startup) {
@@ -64,7 +64,10 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
     createDevice(context, options.device, VK_NULL_HANDLE,
                  options.kernel.precision == Precision::Fp64);
     checkImageFits(imageLimitsOf(context), options.width, options.height, true);
-    createRenderer(renderer, context, scene, renderSettingsFrom(options));
+    RenderSettings settings = renderSettingsFrom(options);
+    // -o out.pfm|out.exr: the averages before the 8-bit rounding (docs/accuracy.md).
+    settings.floatOutput = writing && imageFormatOf(options.outputPath) != ImageFormat::Png;
+    createRenderer(renderer, context, scene, settings);
     createHeadlessTarget(target, context, renderer, options.regionSide);
     if (options.benchFrames > 0) {
         std::cout << runBenchmark(context, renderer, target, options, startup) << std::endl;
@@ -72,7 +75,10 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
         renderHeadlessFrame(target, context, renderer,
                             options.progress ? ProgressMode::Always : ProgressMode::Auto);
         throwIfInterrupted();
-        writePng(options.outputPath, readHeadlessImage(target, renderer));
+        if (settings.floatOutput)
+            writeFloatImage(options.outputPath, readHeadlessFloatImage(target, renderer));
+        else
+            writePng(options.outputPath, readHeadlessImage(target, renderer));
     }
     if (options.pixelGiven) printPixelStory(options, renderer, context, writing);
 }

@@ -83,6 +83,9 @@ using uint = std::uint32_t;
 // bool: the recording kernel of --pixel (docs/pixel_story.md): dispatched for one pixel, it
 // writes what it computes into BINDING_PIXEL_STORY instead of the image.
 #define SPEC_RECORD_PIXEL 13
+// bool: also write each pixel's average before the 8-bit rounding to BINDING_ACCUMULATION
+// (headless, one pass: -o out.pfm|out.exr).
+#define SPEC_FLOAT_OUTPUT 14
 // The most spheres baked in: the closest-hit loop over them is unrolled, one test each.
 #define MAX_BAKED_SPHERES 15u
 #define RAY_OFFSET_FIXED 0u       // 1e-4 along the normal

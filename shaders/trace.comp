@@ -41,6 +41,8 @@ layout(constant_id = SPEC_BAKED_SPHERE_COUNT) const uint bakedSphereCount = 0u;
 layout(constant_id = SPEC_BAKED_LIGHT_COUNT) const uint bakedLightCount = 0u;
 // The recording kernel of --pixel (pixel_story.glsl): one pixel, into `story`, not the image.
 layout(constant_id = SPEC_RECORD_PIXEL) const bool recordPixel = false;
+// -o out.pfm|out.exr: each pixel's average also goes to accumulation[] as floats.
+layout(constant_id = SPEC_FLOAT_OUTPUT) const bool floatOutput = false;
 
 // Camera, counts, image size, samples and depth for this dispatch (see GpuFrameParams).
 layout(push_constant) uniform FrameParamsBlock {
@@ -187,8 +189,10 @@ void main() {
         return;
     }
     if (progressive) accumulation[slot] = vec4(sum, 0.0);
+    vec3 average = sum / float(end);
+    if (floatOutput) accumulation[slot] = vec4(average, 0.0); // headless one pass only
     // floor(c * 255 + 0.5) here, stored as k / 255: the UNORM conversion then gives exactly k
     // whatever the driver's rounding (k / 255 * 255 rounds back to k for every k).
-    vec3 level = floor(sum / float(end) * 255.0 + 0.5);
+    vec3 level = floor(average * 255.0 + 0.5);
     imageStore(outputImage, ivec2(pixel), vec4(level / 255.0, 1.0));
 }

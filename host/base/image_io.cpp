@@ -81,11 +81,15 @@ void writePng(const std::filesystem::path& path, const Image8& image) {
                                 image.width * 4))
         fail(path, "PNG encoder failed");
 
+    writeFileReplacing(path, encoded);
+}
+
+void writeFileReplacing(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes) {
     std::filesystem::path temporary = path;
     temporary += ".tmp";
     FILE* file = std::fopen(temporary.c_str(), "wb");
     if (!file) fail(path, "cannot create " + temporary.string() + ": " + std::strerror(errno));
-    const bool written = std::fwrite(encoded.data(), 1, encoded.size(), file) == encoded.size();
+    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
     int error = errno;
     const bool closed = std::fclose(file) == 0;
     if (written && !closed) error = errno;

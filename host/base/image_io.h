@@ -20,6 +20,10 @@ Image8 readPng(const std::filesystem::path& path);
 // truncated PNG behind. Throws std::runtime_error "PATH: REASON" on failure.
 void writePng(const std::filesystem::path& path, const Image8& image);
 
+// The same for any file's bytes (writePng and the float images use it): "PATH.tmp", every
+// write checked, then renamed over PATH. Throws std::runtime_error "PATH: REASON".
+void writeFileReplacing(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes);
+
 // Checks before any rendering that PATH can be written, by creating "PATH.tmp"
 // (empty; writePng replaces it). Throws std::runtime_error "PATH: REASON" when the
 // folder is missing or not writable, or PATH is a folder. An existing PATH is untouched.

@@ -1,5 +1,6 @@
 #include "cli/options.h"
 
+#include "base/float_image.h"
 #include "cli/window_keys.h"
 
 #include "shared.h"
@@ -121,7 +122,8 @@ std::string usageText() {
     return "Usage: Raytracer SCENE [options]\n"
            "Renders SCENE in a window (headless to a PNG when there is no display).\n"
            "\n"
-           "  -o, --output FILE     render headless and write a PNG\n"
+           "  -o, --output FILE     render headless and write FILE: .png (8-bit), or .pfm or\n"
+           "                        .exr (float: each pixel before the 8-bit rounding)\n"
            "  --width W             image width in pixels (default 640)\n"
            "  --height H            image height in pixels (default 480)\n"
            "  --spp N               samples per pixel (default 1: the pixel centre)\n"
@@ -188,6 +190,10 @@ Options parseOptions(int argc, const char* const* argv) {
         } else if (arg == "-o" || arg == "--output") {
             options.outputPath = value();
             if (options.outputPath.empty()) throw UsageError(arg + " expects a file name");
+            if (!imageFormatOf(options.outputPath))
+                throw UsageError(arg + " " + options.outputPath.string() +
+                                 ": the output must be a file name ending in " +
+                                 kKnownImageExtensions);
         } else if (arg == "--width") {
             options.width = parseCount(arg, value(), 1, 16384);
         } else if (arg == "--height") {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <stdexcept>
 
 namespace {
 
@@ -27,6 +28,24 @@ double submitAndTime(HeadlessTarget& target, const Context& context) {
     const double milliseconds = millisecondsSince(start);
     VK_CHECK(vkResetFences(context.device, 1, &target.submissionDone));
     return milliseconds;
+}
+
+// Records the copy of the float averages (accumulation buffer) to the host buffer, after
+// the kernel's writes, and makes them visible to the host after the fence.
+void recordFloatCopyToHost(VkCommandBuffer commands, const Buffer& accumulation,
+                           const Buffer& hostBuffer) {
+    VkMemoryBarrier written{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    written.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    written.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &written, 0, nullptr, 0, nullptr);
+    const VkBufferCopy region{0, 0, hostBuffer.size};
+    vkCmdCopyBuffer(commands, accumulation.buffer, hostBuffer.buffer, 1, &region);
+    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                         &toHost, 0, nullptr, 0, nullptr);
 }
 
 } // namespace
@@ -59,6 +78,10 @@ void createHeadlessTarget(HeadlessTarget& target, const Context& context, const 
     OnFailure release([&] { destroyHeadlessTarget(target, context); });
     VkDeviceSize bytes = VkDeviceSize(renderer.outputImage.width) * renderer.outputImage.height * 4;
     target.readbackBuffer = createHostBuffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    if (renderer.settings.floatOutput)
+        target.floatReadbackBuffer = createHostBuffer(
+            context, VkDeviceSize(renderer.outputImage.width) * renderer.outputImage.height * 16,
+            VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     // No watchdog guards a CPU device: it gets longer submissions (host/render/region_planner.h).
     const double targetMs = context.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU
                                 ? kCpuTargetSubmissionMs
@@ -103,6 +126,9 @@ FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context,
             recordTraceEnd(renderer, target.commands);
             // The last submission of a frame also copies the image to the readback buffer.
             recordCopyToHost(target.commands, renderer.outputImage, target.readbackBuffer);
+            if (renderer.settings.floatOutput)
+                recordFloatCopyToHost(target.commands, renderer.accumulation,
+                                      target.floatReadbackBuffer);
         }
         VK_CHECK(vkEndCommandBuffer(target.commands));
 
@@ -123,11 +149,27 @@ Image8 readHeadlessImage(const HeadlessTarget& target, const Renderer& renderer)
     return imageFromHostCopy(renderer.outputImage, target.readbackBuffer);
 }
 
+ImageF readHeadlessFloatImage(const HeadlessTarget& target, const Renderer& renderer) {
+    if (!target.floatReadbackBuffer.buffer)
+        throw std::logic_error("readHeadlessFloatImage: the renderer has no float output");
+    ImageF image;
+    image.width = static_cast<int>(renderer.outputImage.width);
+    image.height = static_cast<int>(renderer.outputImage.height);
+    const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
+    image.rgb.resize(pixels * 3);
+    const auto* averages = static_cast<const float*>(target.floatReadbackBuffer.mapped);
+    for (std::size_t p = 0; p < pixels; ++p)
+        for (std::size_t c = 0; c < 3; ++c)
+            image.rgb[p * 3 + c] = averages[p * 4 + c];
+    return image;
+}
+
 void destroyHeadlessTarget(HeadlessTarget& target, const Context& context) {
     if (context.device) vkDeviceWaitIdle(context.device);
     if (target.submissionDone) vkDestroyFence(context.device, target.submissionDone, nullptr);
     if (target.commands)
         vkFreeCommandBuffers(context.device, context.commandPool, 1, &target.commands);
     destroyBuffer(context, target.readbackBuffer);
+    destroyBuffer(context, target.floatReadbackBuffer);
     target = HeadlessTarget{};
 }

@@ -2,6 +2,7 @@
 // memory, wait. No window system.
 #pragma once
 
+#include "base/float_image.h"
 #include "base/image_io.h"
 #include "render/progress.h"
 #include "render/region_planner.h"
@@ -9,6 +10,9 @@
 
 struct HeadlessTarget {
     Buffer readbackBuffer; // host-visible copy of the output image, tightly packed RGBA8
+    // With RenderSettings::floatOutput, host-visible copy of the float averages (vec4 per
+    // pixel, row major) from the accumulation buffer.
+    Buffer floatReadbackBuffer;
     VkCommandBuffer commands = VK_NULL_HANDLE;
     VkFence submissionDone = VK_NULL_HANDLE;
     RegionPlanner planner; // what each submission traces; learns across frames
@@ -34,6 +38,10 @@ FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context,
 
 // The last rendered frame as an image.
 Image8 readHeadlessImage(const HeadlessTarget& target, const Renderer& renderer);
+
+// The last rendered frame's averages before the 8-bit rounding (renderer made with
+// RenderSettings::floatOutput): quantizeImage of them is readHeadlessImage, byte for byte.
+ImageF readHeadlessFloatImage(const HeadlessTarget& target, const Renderer& renderer);
 
 // Records the copy of image (in TRANSFER_SRC_OPTIMAL) into a host buffer of its size, and
 // the barrier that makes it visible to the host once the submission's fence is signalled.

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 
 namespace {
 
@@ -134,6 +135,7 @@ TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderS
         specialization.bakedLightCount = static_cast<std::uint32_t>(packed.lights.size());
     }
     specialization.texelReads = !settings.storageReads;
+    specialization.floatOutput = settings.floatOutput;
     applyKernelChoices(specialization, settings.kernel);
     return specialization;
 }
@@ -142,6 +144,8 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
                     const RenderSettings& settings) {
     OnFailure release([&] { destroyRenderer(renderer, context); });
     renderer.settings = settings;
+    if (settings.floatOutput && settings.progressive)
+        throw std::logic_error("float output is for one-pass (headless) frames only");
     const Precision precision = settings.kernel.precision;
     if (precision == Precision::Fp64 && !context.float64Enabled)
         throw std::logic_error("--precision fp64, but the device was created without shaderFloat64 "
@@ -197,14 +201,23 @@ void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t widt
     vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
 
     // Its contents never matter: the first dispatch of a progressive run writes before
-    // it reads, and one-pass dispatches never touch it.
+    // it reads, float output writes every pixel, and other one-pass dispatches never touch it.
     destroyBuffer(context, renderer.accumulation);
-    const VkDeviceSize accumulationBytes = renderer.settings.progressive
-                                               ? VkDeviceSize(width) * height * sizeof(glm::vec4)
-                                               : sizeof(glm::vec4);
+    const bool perPixel = renderer.settings.progressive || renderer.settings.floatOutput;
+    const VkDeviceSize accumulationBytes =
+        perPixel ? VkDeviceSize(width) * height * sizeof(glm::vec4) : sizeof(glm::vec4);
+    const VkDeviceSize storageRange = context.properties.limits.maxStorageBufferRange;
+    if (renderer.settings.floatOutput && accumulationBytes > storageRange)
+        throw std::runtime_error(
+            "a " + std::to_string(width) + "x" + std::to_string(height) + " float image needs " +
+            std::to_string(accumulationBytes >> 20) + " MiB, more than this device's " +
+            "maxStorageBufferRange of " + std::to_string(storageRange >> 20) + " MiB (" +
+            context.properties.deviceName + "); write a PNG or a smaller image");
     const std::vector<std::uint8_t> zeros(accumulationBytes, 0);
-    renderer.accumulation = createDeviceBuffer(context, zeros.data(), accumulationBytes,
-                                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    // TRANSFER_SRC: headless float output copies it to a host buffer.
+    renderer.accumulation =
+        createDeviceBuffer(context, zeros.data(), accumulationBytes,
+                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     VkDescriptorBufferInfo bufferInfo{renderer.accumulation.buffer, 0, VK_WHOLE_SIZE};
     write.dstBinding = BINDING_ACCUMULATION;
     write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;

@@ -30,6 +30,10 @@ struct RenderSettings {
     std::filesystem::path
         shaderDirectory;      // --shader-dir: compile from here, uncached; empty: embedded
     bool progressive = false; // the window: keep a per-pixel running sum (BINDING_ACCUMULATION)
+    // Headless -o out.pfm|out.exr: the kernel also writes each pixel's average, before the
+    // 8-bit rounding, to the accumulation buffer (then a vec4 per pixel), for
+    // readHeadlessFloatImage. The 8-bit image is written as always. Not with progressive.
+    bool floatOutput = false;
     // --general-kernel (hidden): compile the kernel as if the scene held everything (spheres,
     // triangles, highlights, mirrors), keeping the method choices and the hierarchy, so that
     // tools/kernel_costs can measure what specialising for the scene's content gains. Same image.
@@ -64,7 +68,8 @@ struct Renderer {
     // shader, then read in TRANSFER_SRC_OPTIMAL by a copy (headless) or a blit (window).
     Image outputImage;
     // vec4 per pixel of outputImage: the running sum of the progressive view, in
-    // VK_ACCESS_SHADER_READ/WRITE between dispatches; one vec4 when not progressive.
+    // VK_ACCESS_SHADER_READ/WRITE between dispatches, or the float averages
+    // (settings.floatOutput); one vec4 when neither.
     Buffer accumulation;
     VkQueryPool timestampPool = VK_NULL_HANDLE; // two timestamps around the trace
     RenderSettings settings;

@@ -31,6 +31,7 @@ struct TraceSpecialization {
     std::uint32_t bakedLightCount = 0;
     // The recording kernel of --pixel (host/render/pixel_story.h): one pixel, into the story.
     VkBool32 recordPixel = VK_FALSE;
+    VkBool32 floatOutput = VK_FALSE; // averages also to BINDING_ACCUMULATION (-o .pfm/.exr)
 };
 
 // What each binding of shaders/shared.h is: the output image, a storage buffer, or one of

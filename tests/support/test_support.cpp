@@ -21,36 +21,41 @@ std::string readWholeFile(const std::filesystem::path& path) {
 namespace {
 
 ProcessResult
-runRaytracerIn(const std::vector<std::string>& args, int timeoutSeconds,
-               const std::filesystem::path& workingDirectory,
-               const std::function<void(pid_t, const std::filesystem::path&)>& duringRun);
+runProgramIn(const std::filesystem::path& program, const std::vector<std::string>& args,
+             int timeoutSeconds, const std::filesystem::path& workingDirectory,
+             const std::function<void(pid_t, const std::filesystem::path&)>& duringRun);
 
 } // namespace
 
 ProcessResult runRaytracer(const std::vector<std::string>& args, int timeoutSeconds,
                            const std::filesystem::path& workingDirectory) {
-    return runRaytracerIn(args, timeoutSeconds, workingDirectory, {});
+    return runProgramIn(RAYTRACER_BINARY, args, timeoutSeconds, workingDirectory, {});
 }
 
 ProcessResult
 runRaytracerWhile(const std::vector<std::string>& args,
                   const std::function<void(pid_t, const std::filesystem::path&)>& duringRun,
                   int timeoutSeconds) {
-    return runRaytracerIn(args, timeoutSeconds, {}, duringRun);
+    return runProgramIn(RAYTRACER_BINARY, args, timeoutSeconds, {}, duringRun);
+}
+
+ProcessResult runProgram(const std::filesystem::path& program, const std::vector<std::string>& args,
+                         int timeoutSeconds) {
+    return runProgramIn(program, args, timeoutSeconds, {}, {});
 }
 
 namespace {
 
 ProcessResult
-runRaytracerIn(const std::vector<std::string>& args, int timeoutSeconds,
-               const std::filesystem::path& workingDirectory,
-               const std::function<void(pid_t, const std::filesystem::path&)>& duringRun) {
+runProgramIn(const std::filesystem::path& program, const std::vector<std::string>& args,
+             int timeoutSeconds, const std::filesystem::path& workingDirectory,
+             const std::function<void(pid_t, const std::filesystem::path&)>& duringRun) {
     static int runCount = 0;
     std::filesystem::path captureDir =
         freshOutputDir("process-" + std::to_string(getpid()) + "-" + std::to_string(runCount++));
     std::filesystem::path outPath = captureDir / "stdout.txt", errPath = captureDir / "stderr.txt";
 
-    std::vector<std::string> argv = {RAYTRACER_BINARY};
+    std::vector<std::string> argv = {program.string()};
     argv.insert(argv.end(), args.begin(), args.end());
     std::vector<char*> argvPointers;
     for (std::string& arg : argv)

@@ -26,6 +26,11 @@ struct ProcessResult {
 ProcessResult runRaytracer(const std::vector<std::string>& args, int timeoutSeconds = 300,
                            const std::filesystem::path& workingDirectory = {});
 
+// The same for another program (a tool such as image_diff or reference_render; their paths
+// are IMAGE_DIFF_BINARY and REFERENCE_RENDER_BINARY).
+ProcessResult runProgram(const std::filesystem::path& program, const std::vector<std::string>& args,
+                         int timeoutSeconds = 300);
+
 // Like runRaytracer, and calls duringRun(pid, stderr file) once in this thread while the
 // process runs (to send it a signal, for example); the process is then waited for.
 ProcessResult

@@ -84,13 +84,14 @@ def check_speed_accuracy(binary, source, out):
         fail(f"rows {got}, expected {expected}")
     for r in rows:
         if not (float(r["wall_ms_median"]) > 0 and 0 <= float(r["rmse"]) <= 1 and
-                float(r["delta_e76"]) >= 0 and r["pareto"] in ("yes", "no") and
+                float(r["delta_e76"]) >= 0 and 0 < float(r["ssim"]) <= 1 and
+                r["pareto"] in ("yes", "no") and
                 r["reference_spp"] == "64"):
             fail(f"insane row {r}")
     if not any(r["pareto"] == "yes" for r in rows):
         fail("no setting is on the Pareto front")
     # One sample per pixel is the pixel centre whatever the sampler: the same image.
-    spp1 = {r["rmse"] for r in rows if r["spp"] == "1"}
+    spp1 = {(r["rmse"], r["ssim"]) for r in rows if r["spp"] == "1"}
     if len(spp1) != 1:
         fail(f"spp 1 differs between samplers: {spp1}")
     return out / "speed_accuracy_chart.png"

@@ -14,10 +14,12 @@ packages=(
     libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
     glslang-dev glslang-tools
     libglfw3-dev libglm-dev libstb-dev
+    libtinyexr-dev            # -o out.exr and image_diff's EXR input
     googletest libgtest-dev
     xvfb xauth x11-utils x11-apps xdotool
     clang libclang-rt-14-dev  # make check-hardening: libFuzzer and the sanitizer build
     clang-format              # tools/format.sh --check, run by the suite
+    python3-skimage           # the SSIM test's independent values (structural_similarity)
 )
 # Optional: the benchmark only. Raytracer and the tests never need them.
 bench_packages=(libembree-dev python3-matplotlib)

@@ -3,8 +3,8 @@
 
     python3 tools/lib/speed_accuracy_chart.py results.csv chart.png
 
-One column per scene; the top row RMSE (linear [0,1] units), the bottom row mean CIE76
-Delta E, both against frame time (wall_ms_median), log-log. Colour: sampler; marker:
+One column per scene; the top row RMSE (linear [0,1] units), the middle row mean CIE76
+Delta E, the bottom row 1 - SSIM (8-bit), all against frame time (wall_ms_median), log-log. Colour: sampler; marker:
 precision (circle fp32, square fp64); each point labelled with its spp. The line joins the
 panel's Pareto front (outlined points: no other setting both faster and more accurate on
 that panel's metric; the CSV's pareto column is the front on RMSE). Needs matplotlib
@@ -17,7 +17,10 @@ from chart_support import chart_inputs  # noqa: E402
 
 COLOURS = {"grid": "tab:blue", "stratified": "tab:orange", "r2": "tab:green"}
 MARKERS = {"fp32": "o", "fp64": "s"}
-METRICS = (("rmse", "RMSE (linear [0,1])"), ("delta_e76", "mean Delta E*ab (CIE76, sRGB)"))
+# (CSV column, axis label, the value plotted: an error, lower is better)
+METRICS = (("rmse", "RMSE (linear [0,1])", float),
+           ("delta_e76", "mean Delta E*ab (CIE76, sRGB)", float),
+           ("ssim", "1 - SSIM (8-bit, RGB averaged)", lambda v: 1 - float(v)))
 
 
 def pareto_front(points):
@@ -34,12 +37,13 @@ def main():
     if isinstance(inputs, int):
         return inputs
     plt, rows, scenes, png = inputs
-    fig, axes = plt.subplots(2, len(scenes), figsize=(5.6 * len(scenes), 8.4), squeeze=False)
+    fig, axes = plt.subplots(len(METRICS), len(scenes), figsize=(5.6 * len(scenes), 12.0),
+                             squeeze=False)
     for column, scene in enumerate(scenes):
         scene_rows = [r for r in rows if r["scene"] == scene]
-        for row_index, (metric, label) in enumerate(METRICS):
+        for row_index, (metric, label, error) in enumerate(METRICS):
             ax = axes[row_index][column]
-            points = [(float(r["wall_ms_median"]), max(float(r[metric]), 1e-6), r)
+            points = [(float(r["wall_ms_median"]), max(error(r[metric]), 1e-6), r)
                       for r in scene_rows]
             front = pareto_front(points)
             for x, y, r in points:

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -16,17 +17,20 @@
 namespace {
 
 const char* const usage =
-    "usage: reference_render SCENE -o OUT.png [--width W] [--height H] [--depth D]\n"
+    "usage: reference_render SCENE -o OUT [--width W] [--height H] [--depth D]\n"
     "                        [--spp N] [--background R,G,B] [--fov DEG] [--truncate]\n"
     "                        [--threads N] [--camera-pos X,Y,Z] [--camera-target X,Y,Z]\n"
     "                        [--camera-up X,Y,Z] [--pixel X,Y]\n"
     "Renders SCENE with the double-precision CPU reference (the model of docs/model.md).\n"
+    "  -o OUT                 OUT.png: 8-bit; OUT.pfm or OUT.exr: float, each pixel's average\n"
+    "                         of clamped samples before the rounding to 8 bits\n"
     "  --width W --height H   image size, default 640 480\n"
     "  --depth D              reflection bounces, default 5\n"
     "  --spp N                samples per pixel on a regular grid, default 1\n"
     "  --background R,G,B     colour of rays that hit nothing, default 1,1,1\n"
     "  --fov DEG              vertical field of view, default 60\n"
-    "  --truncate             write floor(c*255) instead of rounding (the course's images)\n"
+    "  --truncate             write floor(c*255) instead of rounding (the course's images;\n"
+    "                         PNG only)\n"
     "  --threads N            worker threads, default: one per hardware thread\n"
     "  --camera-pos X,Y,Z     eye position, default 0,0,0\n"
     "  --camera-target X,Y,Z  point looked at, default 0,0,-1 from the eye\n"
@@ -67,6 +71,7 @@ int main(int argc, char** argv) {
     bool targetGiven = false; // else the target follows --camera-pos: looking down -z
     bool pixelGiven = false;
     glm::ivec2 pixel(0);
+    bool floatOutput = false; // -o OUT.pfm or OUT.exr
     try {
         for (int k = 1; k < argc; ++k) {
             const std::string_view arg = argv[k];
@@ -123,6 +128,16 @@ int main(int argc, char** argv) {
             throw UsageError("--pixel " + std::to_string(pixel.x) + "," + std::to_string(pixel.y) +
                              " lies outside the " + std::to_string(settings.width) + "x" +
                              std::to_string(settings.height) + " image");
+        if (!outputPath.empty()) {
+            const std::optional<ImageFormat> format = imageFormatOf(outputPath);
+            if (!format)
+                throw UsageError("-o " + outputPath +
+                                 ": the output must be a file name ending in " +
+                                 kKnownImageExtensions);
+            floatOutput = *format != ImageFormat::Png;
+            if (floatOutput && settings.truncate)
+                throw UsageError("--truncate applies to PNG output only, not to " + outputPath);
+        }
     } catch (const UsageError& error) {
         std::fprintf(stderr, "reference_render: %s (see --help)\n", error.what());
         return 2;
@@ -134,9 +149,16 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "%s\n", warning.c_str());
         if (!outputPath.empty()) {
             const auto start = std::chrono::steady_clock::now();
-            const Image8 image = renderReference(scene, settings, threads);
-            const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
-            writePng(outputPath, image);
+            std::chrono::duration<double> seconds{};
+            if (floatOutput) {
+                const ImageF image = renderReferenceFloat(scene, settings, threads);
+                seconds = std::chrono::steady_clock::now() - start;
+                writeFloatImage(outputPath, image);
+            } else {
+                const Image8 image = renderReference(scene, settings, threads);
+                seconds = std::chrono::steady_clock::now() - start;
+                writePng(outputPath, image);
+            }
             std::fprintf(stderr, "reference_render: %s %dx%d depth %d spp %d in %.2f s\n",
                          scenePath.c_str(), settings.width, settings.height, settings.depth,
                          settings.spp, seconds.count());

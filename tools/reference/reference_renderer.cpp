@@ -431,14 +431,15 @@ glm::dvec3 tracePixel(const Scene& scene, const ReferenceSettings& settings, int
     return pixelColor(world, settings, camera, i, j, path);
 }
 
-Image8 renderReference(const Scene& scene, const ReferenceSettings& settings, int threads) {
+namespace {
+
+// Calls store(i, j, colour) for every pixel, with the rows shared among threads; store
+// writes disjoint pixels, so it needs no lock.
+template <typename Store>
+void renderPixels(const Scene& scene, const ReferenceSettings& settings, int threads,
+                  const Store& store) {
     const Camera camera = makeCamera(settings);
     const World world = prepareWorld(scene);
-    Image8 image;
-    image.width = settings.width;
-    image.height = settings.height;
-    image.rgba.resize(std::size_t(image.width) * std::size_t(image.height) * 4);
-
     if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
     threads = std::min(threads, settings.height);
     // Rows are handed out one at a time, so an expensive part of the image
@@ -448,18 +449,9 @@ Image8 renderReference(const Scene& scene, const ReferenceSettings& settings, in
     auto work = [&](std::exception_ptr& error) {
         try {
             std::vector<Bounce> path;
-            for (int j = nextRow++; j < settings.height; j = nextRow++) {
-                for (int i = 0; i < settings.width; ++i) {
-                    const dvec3 c = pixelColor(world, settings, camera, i, j, path);
-                    std::uint8_t* out =
-                        &image.rgba[(std::size_t(j) * std::size_t(image.width) + std::size_t(i)) *
-                                    4];
-                    out[0] = std::uint8_t(quantizeChannel(c.x, settings.truncate));
-                    out[1] = std::uint8_t(quantizeChannel(c.y, settings.truncate));
-                    out[2] = std::uint8_t(quantizeChannel(c.z, settings.truncate));
-                    out[3] = 255;
-                }
-            }
+            for (int j = nextRow++; j < settings.height; j = nextRow++)
+                for (int i = 0; i < settings.width; ++i)
+                    store(i, j, pixelColor(world, settings, camera, i, j, path));
         } catch (...) {
             error = std::current_exception();
             nextRow = settings.height; // stop the others early
@@ -478,5 +470,38 @@ Image8 renderReference(const Scene& scene, const ReferenceSettings& settings, in
         thread.join();
     for (const std::exception_ptr& error : errors)
         if (error) std::rethrow_exception(error);
+}
+
+} // namespace
+
+Image8 renderReference(const Scene& scene, const ReferenceSettings& settings, int threads) {
+    makeCamera(settings); // checks the settings before anything is allocated
+    Image8 image;
+    image.width = settings.width;
+    image.height = settings.height;
+    image.rgba.resize(std::size_t(image.width) * std::size_t(image.height) * 4);
+    renderPixels(scene, settings, threads, [&](int i, int j, const dvec3& c) {
+        std::uint8_t* out =
+            &image.rgba[(std::size_t(j) * std::size_t(image.width) + std::size_t(i)) * 4];
+        out[0] = std::uint8_t(quantizeChannel(c.x, settings.truncate));
+        out[1] = std::uint8_t(quantizeChannel(c.y, settings.truncate));
+        out[2] = std::uint8_t(quantizeChannel(c.z, settings.truncate));
+        out[3] = 255;
+    });
+    return image;
+}
+
+ImageF renderReferenceFloat(const Scene& scene, const ReferenceSettings& settings, int threads) {
+    makeCamera(settings);
+    ImageF image;
+    image.width = settings.width;
+    image.height = settings.height;
+    image.rgb.resize(std::size_t(image.width) * std::size_t(image.height) * 3);
+    renderPixels(scene, settings, threads, [&](int i, int j, const dvec3& c) {
+        float* out = &image.rgb[(std::size_t(j) * std::size_t(image.width) + std::size_t(i)) * 3];
+        out[0] = float(c.x);
+        out[1] = float(c.y);
+        out[2] = float(c.z);
+    });
     return image;
 }

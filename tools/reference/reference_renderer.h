@@ -3,7 +3,7 @@
 // the tests compare the GPU renderer against it.
 #pragma once
 
-#include "base/image_io.h"
+#include "base/float_image.h"
 #include "scene/scene.h"
 
 #include <glm/glm.hpp>
@@ -27,6 +27,10 @@ struct ReferenceSettings {
 // a field of view outside (0, 180) degrees, or a camera whose target is its position or
 // whose up is parallel to the view.
 Image8 renderReference(const Scene& scene, const ReferenceSettings& settings, int threads = 0);
+
+// The same image before quantisation: each pixel's average of clamped samples, computed in
+// double and stored as float (for -o out.pfm|out.exr). settings.truncate plays no part.
+ImageF renderReferenceFloat(const Scene& scene, const ReferenceSettings& settings, int threads = 0);
 
 // One pixel (column i from the left, row j from the top) as it goes into the
 // image: the average of its clamped samples, in [0,1], before quantisation.
