@@ -23,8 +23,13 @@ function(raytracer_gtest name kind)
     add_executable(${name} ${ARG_SOURCES})
     target_link_libraries(${name} PRIVATE ${ARG_LIBRARIES} GTest::gtest_main project_warnings)
     target_compile_definitions(${name} PRIVATE ${TEST_PATH_DEFINITIONS})
+    # The environment through `cmake -E env` as the test's launcher, which gtest_discover_tests
+    # uses for the discovery run and every case: given as the ENVIRONMENT property, the list
+    # lost all but its first entry on the way (the sanitizer options and VK_DRIVER_FILES).
+    set_property(TARGET ${name} PROPERTY CROSSCOMPILING_EMULATOR
+                 ${CMAKE_COMMAND} -E env ${TEST_ENVIRONMENT})
     gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 DISCOVERY_MODE ${discovery_mode}
-        PROPERTIES TIMEOUT ${ARG_TIMEOUT} LABELS ${kind} ENVIRONMENT "${TEST_ENVIRONMENT}")
+        PROPERTIES TIMEOUT ${ARG_TIMEOUT} LABELS ${kind})
 endfunction()
 
 function(raytracer_script_test name kind)
