@@ -16,6 +16,17 @@ namespace {
 // submission traces is the caller's choice (host/render/region_planner.h for headless frames).
 constexpr std::uint32_t kMaxDispatchSide = 1024;
 
+// A write of one descriptor of the kernel's set at binding (its type from the binding
+// table); the caller points it at the buffer, view or image.
+VkWriteDescriptorSet descriptorWrite(const Renderer& renderer, std::uint32_t binding) {
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = renderer.descriptorSet;
+    write.dstBinding = binding;
+    write.descriptorCount = 1;
+    write.descriptorType = bindingDescriptorType(binding);
+    return write;
+}
+
 void createDescriptors(Renderer& renderer, const Context& context) {
     constexpr std::uint32_t texelBuffers = BINDING_TEXEL_BUFFER_END - BINDING_FIRST_TEXEL_BUFFER;
     VkDescriptorPoolSize sizes[] = {
@@ -42,11 +53,7 @@ void createDescriptors(Renderer& renderer, const Context& context) {
         if (binding == BINDING_OUTPUT_IMAGE || binding == BINDING_ACCUMULATION ||
             binding == BINDING_PIXEL_STORY)
             continue;
-        VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        write.dstSet = renderer.descriptorSet;
-        write.dstBinding = binding;
-        write.descriptorCount = 1;
-        write.descriptorType = bindingDescriptorType(binding);
+        VkWriteDescriptorSet write = descriptorWrite(renderer, binding);
         if (binding >= BINDING_FIRST_TEXEL_BUFFER)
             write.pTexelBufferView =
                 &renderer.scene.texelViews[binding - BINDING_FIRST_TEXEL_BUFFER];
@@ -56,11 +63,7 @@ void createDescriptors(Renderer& renderer, const Context& context) {
     }
     // The story's buffer: only the recording kernel writes it, but every kernel declares it.
     const VkDescriptorBufferInfo storyInfo{renderer.pixelStory.buffer, 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet storyWrite{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    storyWrite.dstSet = renderer.descriptorSet;
-    storyWrite.dstBinding = BINDING_PIXEL_STORY;
-    storyWrite.descriptorCount = 1;
-    storyWrite.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    VkWriteDescriptorSet storyWrite = descriptorWrite(renderer, BINDING_PIXEL_STORY);
     storyWrite.pBufferInfo = &storyInfo;
     writes.push_back(storyWrite);
     vkUpdateDescriptorSets(context.device, static_cast<std::uint32_t>(writes.size()), writes.data(),
@@ -192,13 +195,9 @@ void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t widt
 
     VkDescriptorImageInfo imageInfo{VK_NULL_HANDLE, renderer.outputImage.view,
                                     VK_IMAGE_LAYOUT_GENERAL};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = renderer.descriptorSet;
-    write.dstBinding = BINDING_OUTPUT_IMAGE;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    write.pImageInfo = &imageInfo;
-    vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
+    VkWriteDescriptorSet imageWrite = descriptorWrite(renderer, BINDING_OUTPUT_IMAGE);
+    imageWrite.pImageInfo = &imageInfo;
+    vkUpdateDescriptorSets(context.device, 1, &imageWrite, 0, nullptr);
 
     // Its contents never matter: the first dispatch of a progressive run writes before
     // it reads, float output writes every pixel, and other one-pass dispatches never touch it.
@@ -219,11 +218,9 @@ void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t widt
         createDeviceBuffer(context, zeros.data(), accumulationBytes,
                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     VkDescriptorBufferInfo bufferInfo{renderer.accumulation.buffer, 0, VK_WHOLE_SIZE};
-    write.dstBinding = BINDING_ACCUMULATION;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    write.pImageInfo = nullptr;
-    write.pBufferInfo = &bufferInfo;
-    vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
+    VkWriteDescriptorSet bufferWrite = descriptorWrite(renderer, BINDING_ACCUMULATION);
+    bufferWrite.pBufferInfo = &bufferInfo;
+    vkUpdateDescriptorSets(context.device, 1, &bufferWrite, 0, nullptr);
 }
 
 void setCamera(Renderer& renderer, const CameraPose& camera) {
