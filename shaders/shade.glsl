@@ -32,7 +32,7 @@ GpuMaterial vertexMaterial(uint v) {
 // tighter of the two. The barycentric sum's error grows with the vertices' magnitudes, this
 // one's with the eye's and t's: on a ground 1e6 across, seen from 1 unit above it, 1e5
 // times less, which keeps thin shadows where the reference has them. Each bound is pbrt-v4's
-// running error analysis (section 6.8): n carries gamma(3) of the cross product of the
+// running error analysis (section 6.8): n carries gamma(4) of the cross product of the
 // edges' magnitudes, the dot products gamma(4) and gamma(5) of their terms' magnitudes, the
 // point gamma(3) of |o| + |t d| plus d times t's error; along the normal, t's error counts
 // only times the cosine of the incidence, (err(num) + |t| err(den)) / |n| (derived in
@@ -46,7 +46,7 @@ void onTrianglePlane(Ray ray, rvec3 a, rvec3 b, rvec3 c, inout SurfacePoint s) {
     rvec3 toA = a - ray.origin;
     real t = dot(n, toA) / den;
     rvec3 p = ray.origin + t * ray.direction;
-    rvec3 nError = GAMMA_3 * (abs(e1.yzx * e2.zxy) + abs(e1.zxy * e2.yzx));
+    rvec3 nError = GAMMA_4 * (abs(e1.yzx * e2.zxy) + abs(e1.zxy * e2.yzx));
     real numError = GAMMA_5 * dot(abs(n), abs(toA)) + dot(nError, abs(toA));
     real denError = GAMMA_4 * dot(abs(n), abs(ray.direction)) + dot(nError, abs(ray.direction));
     real tError = (numError + abs(t) * denError) / abs(den);
