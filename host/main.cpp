@@ -137,7 +137,8 @@ int main(int argc, char** argv) {
     try {
         return run(argc, argv, processStart);
     } catch (const UsageError& error) {
-        std::cerr << "error: " << error.what() << "\n" << usageText();
+        // One line to the help, not the help itself, so that the error stays on screen.
+        std::cerr << "error: " << error.what() << "\n" << kSeeHelp;
         return kUsageError;
     } catch (const SceneError& error) {
         std::cerr << error.what() << '\n';

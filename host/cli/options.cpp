@@ -1,6 +1,7 @@
 #include "cli/options.h"
 
 #include "base/float_image.h"
+#include "cli/option_suggestion.h"
 #include "cli/window_keys.h"
 
 #include "shared.h"
@@ -180,8 +181,18 @@ Options parseOptions(int argc, const char* const* argv) {
     Options options;
     std::vector<std::string> args(argv + 1, argv + argc);
     for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& arg = args[i];
+        // --opt=value is --opt value: arg is then the name, and value() returns the rest
+        // (which an option without a value must not be given).
+        const std::size_t equals = args[i].find('=');
+        const bool hasInlineValue = args[i].compare(0, 2, "--") == 0 && equals != std::string::npos;
+        const std::string arg = hasInlineValue ? args[i].substr(0, equals) : args[i];
+        const std::string inlineValue = hasInlineValue ? args[i].substr(equals + 1) : "";
+        bool inlineValueUsed = false;
         auto value = [&]() -> const std::string& {
+            if (hasInlineValue) {
+                inlineValueUsed = true;
+                return inlineValue;
+            }
             if (i + 1 >= args.size()) throw UsageError(arg + " expects a value");
             return args[++i];
         };
@@ -257,13 +268,17 @@ Options parseOptions(int argc, const char* const* argv) {
             options.pixelGiven = true;
         } else if (parseKernelOption(arg, value, options.kernel)) {
         } else if (arg.size() > 1 && arg[0] == '-') {
-            throw UsageError("unknown option '" + arg + "' (see --help)");
+            const std::string close = closeOptions(arg, documentedOptions(usageText()));
+            throw UsageError("unknown option '" + arg + "'" +
+                             (close.empty() ? "" : "; did you mean " + close + "?"));
         } else if (options.scenePath.empty()) {
             options.scenePath = arg;
         } else {
             throw UsageError("more than one scene file given: '" + options.scenePath.string() +
                              "' and '" + arg + "'");
         }
+        if (hasInlineValue && !inlineValueUsed)
+            throw UsageError(arg + " takes no value, got '" + args[i] + "'");
     }
     // A target given without a position looks from the origin; a position alone keeps
     // looking down -z from there.
@@ -272,7 +287,7 @@ Options parseOptions(int argc, const char* const* argv) {
     if (std::string problem = cameraPoseProblem(options.camera); !problem.empty())
         throw UsageError(problem);
     if (options.scenePath.empty() && !options.showHelp && options.dumpShadersTo.empty())
-        throw UsageError("no scene file given (see --help)");
+        throw UsageError("no scene file given");
     if (options.forceWindow && (!options.outputPath.empty() || options.benchFrames > 0))
         throw UsageError("--window cannot be combined with -o or --bench, which render headless");
     if (options.pixelGiven &&

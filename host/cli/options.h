@@ -64,3 +64,6 @@ struct UsageError : std::runtime_error {
 Options parseOptions(int argc, const char* const* argv);
 
 std::string usageText();
+
+// The line after a usage error, in place of the whole of usageText().
+inline constexpr const char* kSeeHelp = "Run 'Raytracer --help' for the list of options.\n";

@@ -52,7 +52,7 @@ TEST(CommandLine, BadOptionValuesAreUsageErrors) {
         {{"x.scene", "--background", "1,1"},
          "--background expects three non-negative numbers R,G,B, got '1,1'"},
         {{"x.scene", "--width"}, "--width expects a value"},
-        {{"x.scene", "--frobnicate"}, "unknown option '--frobnicate' (see --help)"},
+        {{"x.scene", "--frobnicate"}, "unknown option '--frobnicate'"},
         {{"a.scene", "b.scene"}, "more than one scene file given: 'a.scene' and 'b.scene'"},
         {{"x.scene", "--sampler", "halton"},
          "--sampler expects grid, stratified or r2, got 'halton'"},
@@ -72,6 +72,43 @@ TEST(CommandLine, BadOptionValuesAreUsageErrors) {
         EXPECT_EQ(run.exitCode, 2) << message;
         EXPECT_NE(run.err.find("error: " + message), std::string::npos) << run.err;
     }
+}
+
+// A usage error is two lines: the error, then where the options are listed (not the whole
+// help, which would scroll the error out of sight).
+TEST(CommandLine, UsageErrorIsTheErrorAndOneLineToTheHelp) {
+    const std::string seeHelp = "Run 'Raytracer --help' for the list of options.\n";
+    const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+        {{"x.scene", "--widht", "800"}, "error: unknown option '--widht'; did you mean --width?\n"},
+        {{"x.scene", "--offst=scaled"},
+         "error: unknown option '--offst'; did you mean --offset?\n"},
+        {{"x.scene", "--frobnicate"}, "error: unknown option '--frobnicate'\n"},
+        {{"x.scene", "--validate=yes"}, "error: --validate takes no value, got '--validate=yes'\n"},
+        {{"x.scene", "--width=0"},
+         "error: --width expects a whole number from 1 to 16384, got '0'\n"},
+        {{}, "error: no scene file given\n"},
+    };
+    for (const auto& [args, message] : cases) {
+        ProcessResult run = runRaytracer(args);
+        EXPECT_EQ(run.exitCode, 2) << run.err;
+        EXPECT_EQ(run.err, message + seeHelp);
+        EXPECT_EQ(run.out, "");
+    }
+}
+
+// --opt=value renders what --opt value renders: the same bytes.
+TEST(CommandLine, OptionEqualsValueRendersAsTwoWords) {
+    std::filesystem::path dir = freshOutputDir("cli/equals");
+    std::filesystem::path scene = writeScene(dir, minimalScene());
+    const std::string joined = (dir / "joined.png").string(), split = (dir / "split.png").string();
+    ProcessResult a = runRaytracer(
+        {scene.string(), "--output=" + joined, "--width=24", "--height=18", "--offset=scaled"});
+    ProcessResult b = runRaytracer(
+        {scene.string(), "-o", split, "--width", "24", "--height", "18", "--offset", "scaled"});
+    ASSERT_EQ(a.exitCode, 0) << a.err;
+    ASSERT_EQ(b.exitCode, 0) << b.err;
+    EXPECT_EQ(readPng(joined).width, 24);
+    EXPECT_EQ(readWholeFile(joined), readWholeFile(split));
 }
 
 TEST(CommandLine, MissingSceneFileNamesTheFileAndWritesNothing) {
