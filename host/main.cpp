@@ -4,6 +4,7 @@
 #include "bench.h"
 #include "cli/options.h"
 #include "cli/render_settings.h"
+#include "cli/version.h"
 #include "gpu/cpu_driver.h"
 #include "gpu/image_limits.h"
 #include "render/headless.h"
@@ -89,6 +90,10 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
     requestCpuDriverThreads(options.cpuThreads); // before any Vulkan call reads it
     if (options.showHelp) {
         std::cout << usageText();
+        return kSuccess;
+    }
+    if (options.showVersion) { // before any Vulkan call: it works with no driver at all
+        std::cout << versionText();
         return kSuccess;
     }
     if (!options.dumpShadersTo.empty()) {

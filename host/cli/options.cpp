@@ -168,6 +168,8 @@ std::string usageText() {
            "                        includes); the window recompiles when one is saved\n"
            "  --dump-shaders DIR    write the built-in shader sources to DIR and exit\n"
            "  --bench-window N      window: time N progressive frames, print frames per second\n"
+           "  --version             print the version, and those of the Vulkan headers and\n"
+           "                        glslang it was built with\n"
            "  -h, --help            show this help\n"
            "\n"
            "The window refines progressively, one or more samples per pixel per frame, up to\n"
@@ -198,6 +200,8 @@ Options parseOptions(int argc, const char* const* argv) {
         };
         if (arg == "-h" || arg == "--help") {
             options.showHelp = true;
+        } else if (arg == "--version") {
+            options.showVersion = true;
         } else if (arg == "-o" || arg == "--output") {
             options.outputPath = value();
             if (options.outputPath.empty()) throw UsageError(arg + " expects a file name");
@@ -286,7 +290,8 @@ Options parseOptions(int argc, const char* const* argv) {
         options.camera.target = options.camera.position + glm::dvec3(0.0, 0.0, -1.0);
     if (std::string problem = cameraPoseProblem(options.camera); !problem.empty())
         throw UsageError(problem);
-    if (options.scenePath.empty() && !options.showHelp && options.dumpShadersTo.empty())
+    if (options.scenePath.empty() && !options.showHelp && !options.showVersion &&
+        options.dumpShadersTo.empty())
         throw UsageError("no scene file given");
     if (options.forceWindow && (!options.outputPath.empty() || options.benchFrames > 0))
         throw UsageError("--window cannot be combined with -o or --bench, which render headless");

@@ -28,7 +28,8 @@ struct Options {
     bool validate = false;         // --validate: Khronos layer on, any message fails the run
     Acceleration acceleration = Acceleration::Auto; // --accel auto|bvh|none
     bool showHelp = false;
-    bool useCache = true; // --no-cache: no shader or pipeline cache on disk
+    bool showVersion = false; // --version: the program's, Vulkan's headers' and glslang's
+    bool useCache = true;     // --no-cache: no shader or pipeline cache on disk
     std::uint32_t regionSide =
         0;                 // --region-size N (hidden, for tests): fixed N x N submissions; 0 adapts
     bool progress = false; // --progress: report progress even for a short render

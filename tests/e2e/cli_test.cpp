@@ -4,7 +4,9 @@
 #include "test_support.h"
 
 #include <glm/vec2.hpp>
+#include <glslang/build_info.h>
 #include <gtest/gtest.h>
+#include <vulkan/vulkan_core.h>
 
 #include <chrono>
 #include <csignal>
@@ -33,6 +35,28 @@ TEST(CommandLine, HelpPrintsUsageAndSucceeds) {
          {"--sampler grid|stratified|r2", "--seed N", "--precision fp32|fp64",
           "--sphere-test naive|stable", "--triangle-test mt|watertight", "--offset fixed|scaled"})
         EXPECT_NE(run.out.find(option), std::string::npos) << option << " missing from " << run.out;
+}
+
+// The lines expected from CMake's project() VERSION and the headers this test was built with
+// (the same packages as the program's).
+std::string expectedVersionText() {
+    const std::uint32_t vulkan = VK_HEADER_VERSION_COMPLETE;
+    return "Raytracer " RAYTRACER_VERSION "\nVulkan headers " +
+           std::to_string(VK_API_VERSION_MAJOR(vulkan)) + "." +
+           std::to_string(VK_API_VERSION_MINOR(vulkan)) + "." + std::to_string(VK_HEADER_VERSION) +
+           "\nglslang " + std::to_string(GLSLANG_VERSION_MAJOR) + "." +
+           std::to_string(GLSLANG_VERSION_MINOR) + "." + std::to_string(GLSLANG_VERSION_PATCH) +
+           "\n";
+}
+
+TEST(CommandLine, VersionNamesTheProgramVulkanAndGlslang) {
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"--version"}, {"x.scene", "--version", "--width", "8"}}) {
+        ProcessResult run = runRaytracer(args);
+        EXPECT_EQ(run.exitCode, 0) << run.err;
+        EXPECT_EQ(run.out, expectedVersionText());
+        EXPECT_EQ(run.err, ""); // no "Device:" line: no Vulkan instance was made
+    }
 }
 
 TEST(CommandLine, MissingSceneArgumentIsAUsageError) {

@@ -180,6 +180,21 @@ TEST(EnvironmentFaults, NoVulkanDriverIsAClearErrorNotACrash) {
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png.tmp"));
 }
 
+// Without a driver the loader fails any instance; --version makes none, so it answers as it
+// does with one (cli_test checks those lines).
+TEST(EnvironmentFaults, VersionNeedsNoVulkanDriver) {
+    const std::string withDriver = runRaytracer({"--version"}).out;
+    std::filesystem::path dir = freshOutputDir("hardening/version-no-driver");
+    const std::string missing = (dir / "no-such-icd.json").string();
+    ScopedEnvironment icd("VK_ICD_FILENAMES", missing.c_str());
+    ScopedEnvironment driver("VK_DRIVER_FILES", missing.c_str());
+    ProcessResult run = runRaytracer({"--version"});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.out.rfind("Raytracer " RAYTRACER_VERSION "\n", 0), 0u) << run.out;
+    EXPECT_EQ(run.out, withDriver);
+    EXPECT_EQ(run.err, "");
+}
+
 TEST(EnvironmentFaults, WindowAskedForWithoutADisplayIsAnError) {
     std::filesystem::path dir = freshOutputDir("hardening/window");
     std::filesystem::path scene = writeScene(dir);

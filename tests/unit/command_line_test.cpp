@@ -98,6 +98,7 @@ std::vector<std::vector<std::string>> optionSets() {
         {"a.scene", "-o", "b.png", "--width", "20", "--height", "10", "--pixel", "19,9"},
         {"--dump-shaders", "dumped shaders"},
         {"--help"},
+        {"--version"},
         {"a.scene", "--validate", "--no-cache", "--progress", "--window", "--redraw-continuously",
          "--general-kernel", "--storage-reads"},
     };
@@ -266,7 +267,8 @@ TEST(CommandLine, OptionEqualsValueIsTheSameAsTwoWords) {
 }
 
 TEST(CommandLine, SwitchGivenAValueIsAUsageError) {
-    for (const char* flag : {"--help", "--validate", "--no-cache", "--progress", "--window"})
+    for (const char* flag :
+         {"--help", "--version", "--validate", "--no-cache", "--progress", "--window"})
         EXPECT_EQ(usageErrorOf({"x.scene", std::string(flag) + "=yes"}),
                   std::string(flag) + " takes no value, got '" + flag + "=yes'");
     EXPECT_EQ(usageErrorOf({"x.scene", "--frobnicate=3"}), "unknown option '--frobnicate'");
