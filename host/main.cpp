@@ -12,6 +12,7 @@
 #include "render/kernel_sources.h"
 #include "render/pixel_story.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_summary.h"
 #include "window/window.h"
 
 #include <chrono>
@@ -110,6 +111,10 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
             .count();
     for (const std::string& warning : scene.warnings)
         std::cerr << warning << '\n';
+    if (options.checkOnly) { // the scene parsed: it is valid; no Vulkan from here either
+        std::cout << options.scenePath.string() << ": valid\n" << sceneSummary(scene);
+        return kSuccess;
+    }
 
     bool headless = !options.outputPath.empty() || options.benchFrames > 0 || options.pixelGiven;
     if (!headless && !runWindow(options, scene)) {

@@ -98,6 +98,7 @@ std::string commandLine(const Options& options) {
     addSwitch("--storage-reads", options.storageReads);
     addSwitch("--help", options.showHelp);
     addSwitch("--version", options.showVersion);
+    addSwitch("--check", options.checkOnly);
     return command;
 }
 

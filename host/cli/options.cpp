@@ -168,6 +168,8 @@ std::string usageText() {
            "                        includes); the window recompiles when one is saved\n"
            "  --dump-shaders DIR    write the built-in shader sources to DIR and exit\n"
            "  --bench-window N      window: time N progressive frames, print frames per second\n"
+           "  --check               parse and validate SCENE without Vulkan: print its counts,\n"
+           "                        bounds and warnings; exit 0 if valid, 3 if not\n"
            "  --version             print the version, and those of the Vulkan headers and\n"
            "                        glslang it was built with\n"
            "  -h, --help            show this help\n"
@@ -202,6 +204,8 @@ Options parseOptions(int argc, const char* const* argv) {
             options.showHelp = true;
         } else if (arg == "--version") {
             options.showVersion = true;
+        } else if (arg == "--check") {
+            options.checkOnly = true;
         } else if (arg == "-o" || arg == "--output") {
             options.outputPath = value();
             if (options.outputPath.empty()) throw UsageError(arg + " expects a file name");
@@ -307,6 +311,11 @@ Options parseOptions(int argc, const char* const* argv) {
         throw UsageError("--pixel renders headless and cannot be combined with --window, --bench "
                          "or --bench-window (the window's I key prints the story of the pixel "
                          "under the mouse)");
+    if (options.checkOnly &&
+        (!options.outputPath.empty() || options.benchFrames > 0 || options.benchWindowFrames > 0 ||
+         options.pixelGiven || options.forceWindow))
+        throw UsageError("--check renders nothing and cannot be combined with -o, --bench, "
+                         "--bench-window, --pixel or --window");
     if (options.benchWindowFrames > 0 && (!options.outputPath.empty() || options.benchFrames > 0))
         throw UsageError(
             "--bench-window cannot be combined with -o or --bench, which render headless");

@@ -29,7 +29,8 @@ struct Options {
     Acceleration acceleration = Acceleration::Auto; // --accel auto|bvh|none
     bool showHelp = false;
     bool showVersion = false; // --version: the program's, Vulkan's headers' and glslang's
-    bool useCache = true;     // --no-cache: no shader or pipeline cache on disk
+    bool checkOnly = false; // --check: parse and validate the scene, print what it holds; no Vulkan
+    bool useCache = true;   // --no-cache: no shader or pipeline cache on disk
     std::uint32_t regionSide =
         0;                 // --region-size N (hidden, for tests): fixed N x N submissions; 0 adapts
     bool progress = false; // --progress: report progress even for a short render

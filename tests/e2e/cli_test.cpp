@@ -135,6 +135,51 @@ TEST(CommandLine, OptionEqualsValueRendersAsTwoWords) {
     EXPECT_EQ(readWholeFile(joined), readWholeFile(split));
 }
 
+// --check on a scene written here, whose counts and box are known from its text: two
+// spheres sharing a material, a triangle with a zero normal and two vertex materials, two
+// lights (outside the box, which holds only what rays can hit).
+TEST(CommandLine, CheckPrintsWhatTheSceneHolds) {
+    std::filesystem::path dir = freshOutputDir("cli/check");
+    const std::string vertex = "dif: 0.5 0.5 0.5\nspe: 0 0 0\nshi: 1\n";
+    const std::string other = "dif: 0.25 0.5 1\nspe: 0.125 0 0\nshi: 8\n";
+    const std::string text = "5\namb: 0.1 0.1 0.1\n"
+                             "sphere\npos: 0 0 -3\nrad: 1\n" +
+                             vertex + "sphere\npos: 2 0.5 -4\nrad: 0.5\n" + vertex +
+                             "triangle\npos: -2 -1 -5\nnor: 0 0 0\n" + vertex +
+                             "pos: 1 -1 -5\nnor: 0 0 1\n" + other + "pos: 0 3 -5\nnor: 0 0 1\n" +
+                             vertex +
+                             "light\npos: 10 10 10\ncol: 1 1 1\nlight\npos: -9 0 0\ncol: 1 1 1\n";
+    const std::filesystem::path scene = writeScene(dir, text);
+    ProcessResult run = runRaytracer({scene.string(), "--check"});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.out, scene.string() + ": valid\n"
+                                        "spheres: 2\ntriangles: 1\nlights: 2\nmaterials: 2\n"
+                                        "bounds: -2,-1,-5 to 2.5,3,-2\nwarnings: 1\n");
+    // The warning as a render prints it, and nothing of Vulkan ("Device: ...").
+    EXPECT_EQ(run.err,
+              scene.string() + ":17: warning: the triangle's vertex 1 normal has zero length\n");
+    EXPECT_FALSE(std::filesystem::exists(dir / "input.png"));
+}
+
+// A malformed scene: status 3 and the very message a render gives, before any Vulkan.
+TEST(CommandLine, CheckReportsAMalformedSceneAsARenderDoes) {
+    std::filesystem::path dir = freshOutputDir("cli/check-malformed");
+    const std::filesystem::path scene =
+        writeScene(dir, "1\namb: 0.1 0.1 0.1\nsphere\npos: 0 0 -3\nrad: -1\n");
+    ProcessResult check = runRaytracer({scene.string(), "--check"});
+    ProcessResult render = runRaytracer({scene.string(), "-o", (dir / "out.png").string()});
+    EXPECT_EQ(check.exitCode, 3) << check.err;
+    EXPECT_EQ(render.exitCode, 3) << render.err;
+    EXPECT_EQ(check.err, render.err);
+    EXPECT_EQ(check.err.rfind(scene.string() + ":5: error: ", 0), 0u) << check.err;
+    EXPECT_EQ(check.out, "");
+    ProcessResult combined = runRaytracer({scene.string(), "--check", "-o", "x.png"});
+    EXPECT_EQ(combined.exitCode, 2);
+    EXPECT_EQ(combined.err, "error: --check renders nothing and cannot be combined with -o, "
+                            "--bench, --bench-window, --pixel or --window\n"
+                            "Run 'Raytracer --help' for the list of options.\n");
+}
+
 TEST(CommandLine, MissingSceneFileNamesTheFileAndWritesNothing) {
     std::filesystem::path dir = freshOutputDir("cli/missing");
     std::filesystem::path output = dir / "out.png";

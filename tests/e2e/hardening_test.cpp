@@ -195,6 +195,29 @@ TEST(EnvironmentFaults, VersionNeedsNoVulkanDriver) {
     EXPECT_EQ(run.err, "");
 }
 
+// --check makes no instance either: a valid scene passes and a malformed one fails, with
+// no driver visible, exactly as they do with one.
+TEST(EnvironmentFaults, CheckNeedsNoVulkanDriver) {
+    std::filesystem::path dir = freshOutputDir("hardening/check-no-driver");
+    const std::filesystem::path valid = writeScene(dir);
+    const std::filesystem::path malformed = dir / "malformed.scene";
+    writeTextFile(malformed, "1\namb: 0.1 0.1 0.1\nsphere\npos: 0 0\n");
+    const ProcessResult validWithDriver = runRaytracer({valid.string(), "--check"});
+    const ProcessResult malformedWithDriver = runRaytracer({malformed.string(), "--check"});
+    const std::string missing = (dir / "no-such-icd.json").string();
+    ScopedEnvironment icd("VK_ICD_FILENAMES", missing.c_str());
+    ScopedEnvironment driver("VK_DRIVER_FILES", missing.c_str());
+    const ProcessResult validRun = runRaytracer({valid.string(), "--check"});
+    EXPECT_EQ(validRun.exitCode, 0) << validRun.err;
+    EXPECT_TRUE(contains(validRun.out, ": valid\nspheres: ")) << validRun.out;
+    EXPECT_EQ(validRun.out, validWithDriver.out);
+    EXPECT_EQ(validRun.err, validWithDriver.err);
+    const ProcessResult malformedRun = runRaytracer({malformed.string(), "--check"});
+    EXPECT_EQ(malformedRun.exitCode, 3) << malformedRun.err;
+    EXPECT_TRUE(contains(malformedRun.err, malformed.string() + ":")) << malformedRun.err;
+    EXPECT_EQ(malformedRun.err, malformedWithDriver.err);
+}
+
 TEST(EnvironmentFaults, WindowAskedForWithoutADisplayIsAnError) {
     std::filesystem::path dir = freshOutputDir("hardening/window");
     std::filesystem::path scene = writeScene(dir);

@@ -99,6 +99,7 @@ std::vector<std::vector<std::string>> optionSets() {
         {"--dump-shaders", "dumped shaders"},
         {"--help"},
         {"--version"},
+        {"a.scene", "--check"},
         {"a.scene", "--validate", "--no-cache", "--progress", "--window", "--redraw-continuously",
          "--general-kernel", "--storage-reads"},
     };
