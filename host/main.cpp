@@ -13,6 +13,7 @@
 #include "render/pixel_story.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_summary.h"
+#include "scene/warning_summary.h"
 #include "window/window.h"
 
 #include <chrono>
@@ -109,8 +110,8 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
     startup.parseMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - parseStart)
             .count();
-    for (const std::string& warning : scene.warnings)
-        std::cerr << warning << '\n';
+    for (const std::string& line : summarisedWarnings(scene.warnings))
+        std::cerr << line << '\n';
     if (options.checkOnly) { // the scene parsed: it is valid; no Vulkan from here either
         std::cout << options.scenePath.string() << ": valid\n" << sceneSummary(scene);
         return kSuccess;

@@ -161,6 +161,28 @@ TEST(CommandLine, CheckPrintsWhatTheSceneHolds) {
     EXPECT_FALSE(std::filesystem::exists(dir / "input.png"));
 }
 
+// A mesh of 35,000 zero normals: twenty of them on stderr, then one line for the rest.
+TEST(CommandLine, ManyWarningsOfAKindAreSummarised) {
+    std::filesystem::path dir = freshOutputDir("cli/many-warnings");
+    const int count = 35000;
+    std::string text = std::to_string(count) + "\namb: 0 0 0\n";
+    const std::string material = "dif: 0.5 0.5 0.5\nspe: 0 0 0\nshi: 1\n";
+    for (int i = 0; i < count; ++i)
+        text += "triangle\npos: 0 0 -1\nnor: 0 0 0\n" + material + "pos: 1 0 -1\nnor: 0 0 1\n" +
+                material + "pos: 0 1 -1\nnor: 0 0 1\n" + material;
+    const std::filesystem::path scene = writeScene(dir, text);
+    ProcessResult run = runRaytracer({scene.string(), "--check"});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    std::string expected;
+    for (int i = 0; i < 20; ++i) // triangle i's first normal is on line 5 + 16 i
+        expected += scene.string() + ":" + std::to_string(5 + 16 * i) +
+                    ": warning: the triangle's vertex 1 normal has zero length\n";
+    expected += scene.string() + ": warning: ... and 34,980 more warnings that the triangle's "
+                                 "vertex N normal has zero length\n";
+    EXPECT_EQ(run.err, expected);
+    EXPECT_NE(run.out.find("\nwarnings: 35000\n"), std::string::npos) << run.out;
+}
+
 // A malformed scene: status 3 and the very message a render gives, before any Vulkan.
 TEST(CommandLine, CheckReportsAMalformedSceneAsARenderDoes) {
     std::filesystem::path dir = freshOutputDir("cli/check-malformed");
