@@ -183,6 +183,22 @@ TEST(CommandLine, ManyWarningsOfAKindAreSummarised) {
     EXPECT_NE(run.out.find("\nwarnings: 35000\n"), std::string::npos) << run.out;
 }
 
+// -o into a folder that is not there names the folder, before any Vulkan.
+TEST(CommandLine, MissingOutputFolderIsNamed) {
+    std::filesystem::path dir = freshOutputDir("cli/missing-folder");
+    const std::filesystem::path scene = writeScene(dir, minimalScene());
+    ProcessResult run = runRaytracer({scene.string(), "-o", "missing/dir/out.png"}, 60, dir);
+    EXPECT_EQ(run.exitCode, 1) << run.err;
+    EXPECT_EQ(run.err, "error: missing/dir/out.png: the folder missing/dir does not exist\n");
+    EXPECT_FALSE(std::filesystem::exists(dir / "missing"));
+    // Once the folder exists the same command writes the image.
+    std::filesystem::create_directories(dir / "missing" / "dir");
+    ProcessResult again = runRaytracer(
+        {scene.string(), "-o", "missing/dir/out.png", "--width", "8", "--height", "6"}, 60, dir);
+    EXPECT_EQ(again.exitCode, 0) << again.err;
+    EXPECT_EQ(readPng(dir / "missing" / "dir" / "out.png").width, 8);
+}
+
 // A malformed scene: status 3 and the very message a render gives, before any Vulkan.
 TEST(CommandLine, CheckReportsAMalformedSceneAsARenderDoes) {
     std::filesystem::path dir = freshOutputDir("cli/check-malformed");

@@ -255,7 +255,8 @@ TEST(NothingLost, UnwritableOutputFailsBeforeRenderingAndWritesNothing) {
     writeTextFile(dir / "a-file", "not a folder");
     std::filesystem::create_directories(dir / "folder.png");
     const std::vector<std::pair<std::filesystem::path, std::string>> cases = {
-        {dir / "no-such-folder" / "out.png", "out.png.tmp: No such file or directory"},
+        {dir / "no-such-folder" / "out.png",
+         "the folder " + (dir / "no-such-folder").string() + " does not exist\n"},
         {dir / "a-file" / "out.png", "out.png.tmp: Not a directory"},
         {"/proc/raytracer-out.png",
          "cannot create /proc/raytracer-out.png.tmp"}, // unwritable, even for root
