@@ -4,6 +4,7 @@
 #include "bench.h"
 #include "cli/options.h"
 #include "cli/render_settings.h"
+#include "cli/version.h"
 #include "gpu/cpu_driver.h"
 #include "gpu/image_limits.h"
 #include "render/headless.h"
@@ -11,6 +12,8 @@
 #include "render/kernel_sources.h"
 #include "render/pixel_story.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_summary.h"
+#include "scene/warning_summary.h"
 #include "window/window.h"
 
 #include <chrono>
@@ -91,6 +94,10 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
         std::cout << usageText();
         return kSuccess;
     }
+    if (options.showVersion) { // before any Vulkan call: it works with no driver at all
+        std::cout << versionText();
+        return kSuccess;
+    }
     if (!options.dumpShadersTo.empty()) {
         writeEmbeddedShaders(options.dumpShadersTo);
         std::cerr << "Wrote the shader sources to " << options.dumpShadersTo.string()
@@ -103,8 +110,12 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
     startup.parseMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - parseStart)
             .count();
-    for (const std::string& warning : scene.warnings)
-        std::cerr << warning << '\n';
+    for (const std::string& line : summarisedWarnings(scene.warnings))
+        std::cerr << line << '\n';
+    if (options.checkOnly) { // the scene parsed: it is valid; no Vulkan from here either
+        std::cout << options.scenePath.string() << ": valid\n" << sceneSummary(scene);
+        return kSuccess;
+    }
 
     bool headless = !options.outputPath.empty() || options.benchFrames > 0 || options.pixelGiven;
     if (!headless && !runWindow(options, scene)) {
@@ -137,7 +148,8 @@ int main(int argc, char** argv) {
     try {
         return run(argc, argv, processStart);
     } catch (const UsageError& error) {
-        std::cerr << "error: " << error.what() << "\n" << usageText();
+        // One line to the help, not the help itself, so that the error stays on screen.
+        std::cerr << "error: " << error.what() << "\n" << kSeeHelp;
         return kUsageError;
     } catch (const SceneError& error) {
         std::cerr << error.what() << '\n';

@@ -110,6 +110,10 @@ void writeFileReplacing(const std::filesystem::path& path, const std::vector<std
 void reservePngOutput(const std::filesystem::path& path) {
     std::error_code error;
     if (std::filesystem::is_directory(path, error)) fail(path, "is a folder, not a file name");
+    // Named as such, rather than as a failure to create PATH.tmp, which the user never named.
+    const std::filesystem::path folder = path.parent_path();
+    if (!folder.empty() && !std::filesystem::exists(folder, error))
+        fail(path, "the folder " + folder.string() + " does not exist");
     std::filesystem::path temporary = path;
     temporary += ".tmp";
     FILE* file = std::fopen(temporary.c_str(), "wb");

@@ -97,6 +97,8 @@ std::string commandLine(const Options& options) {
     addSwitch("--general-kernel", options.generalKernel);
     addSwitch("--storage-reads", options.storageReads);
     addSwitch("--help", options.showHelp);
+    addSwitch("--version", options.showVersion);
+    addSwitch("--check", options.checkOnly);
     return command;
 }
 

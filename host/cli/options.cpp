@@ -1,6 +1,7 @@
 #include "cli/options.h"
 
 #include "base/float_image.h"
+#include "cli/option_suggestion.h"
 #include "cli/window_keys.h"
 
 #include "shared.h"
@@ -167,6 +168,10 @@ std::string usageText() {
            "                        includes); the window recompiles when one is saved\n"
            "  --dump-shaders DIR    write the built-in shader sources to DIR and exit\n"
            "  --bench-window N      window: time N progressive frames, print frames per second\n"
+           "  --check               parse and validate SCENE without Vulkan: print its counts,\n"
+           "                        bounds and warnings; exit 0 if valid, 3 if not\n"
+           "  --version             print the version, and those of the Vulkan headers and\n"
+           "                        glslang it was built with\n"
            "  -h, --help            show this help\n"
            "\n"
            "The window refines progressively, one or more samples per pixel per frame, up to\n"
@@ -180,13 +185,27 @@ Options parseOptions(int argc, const char* const* argv) {
     Options options;
     std::vector<std::string> args(argv + 1, argv + argc);
     for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& arg = args[i];
+        // --opt=value is --opt value: arg is then the name, and value() returns the rest
+        // (which an option without a value must not be given).
+        const std::size_t equals = args[i].find('=');
+        const bool hasInlineValue = args[i].compare(0, 2, "--") == 0 && equals != std::string::npos;
+        const std::string arg = hasInlineValue ? args[i].substr(0, equals) : args[i];
+        const std::string inlineValue = hasInlineValue ? args[i].substr(equals + 1) : "";
+        bool inlineValueUsed = false;
         auto value = [&]() -> const std::string& {
+            if (hasInlineValue) {
+                inlineValueUsed = true;
+                return inlineValue;
+            }
             if (i + 1 >= args.size()) throw UsageError(arg + " expects a value");
             return args[++i];
         };
         if (arg == "-h" || arg == "--help") {
             options.showHelp = true;
+        } else if (arg == "--version") {
+            options.showVersion = true;
+        } else if (arg == "--check") {
+            options.checkOnly = true;
         } else if (arg == "-o" || arg == "--output") {
             options.outputPath = value();
             if (options.outputPath.empty()) throw UsageError(arg + " expects a file name");
@@ -257,13 +276,17 @@ Options parseOptions(int argc, const char* const* argv) {
             options.pixelGiven = true;
         } else if (parseKernelOption(arg, value, options.kernel)) {
         } else if (arg.size() > 1 && arg[0] == '-') {
-            throw UsageError("unknown option '" + arg + "' (see --help)");
+            const std::string close = closeOptions(arg, documentedOptions(usageText()));
+            throw UsageError("unknown option '" + arg + "'" +
+                             (close.empty() ? "" : "; did you mean " + close + "?"));
         } else if (options.scenePath.empty()) {
             options.scenePath = arg;
         } else {
             throw UsageError("more than one scene file given: '" + options.scenePath.string() +
                              "' and '" + arg + "'");
         }
+        if (hasInlineValue && !inlineValueUsed)
+            throw UsageError(arg + " takes no value, got '" + args[i] + "'");
     }
     // A target given without a position looks from the origin; a position alone keeps
     // looking down -z from there.
@@ -271,8 +294,9 @@ Options parseOptions(int argc, const char* const* argv) {
         options.camera.target = options.camera.position + glm::dvec3(0.0, 0.0, -1.0);
     if (std::string problem = cameraPoseProblem(options.camera); !problem.empty())
         throw UsageError(problem);
-    if (options.scenePath.empty() && !options.showHelp && options.dumpShadersTo.empty())
-        throw UsageError("no scene file given (see --help)");
+    if (options.scenePath.empty() && !options.showHelp && !options.showVersion &&
+        options.dumpShadersTo.empty())
+        throw UsageError("no scene file given");
     if (options.forceWindow && (!options.outputPath.empty() || options.benchFrames > 0))
         throw UsageError("--window cannot be combined with -o or --bench, which render headless");
     if (options.pixelGiven &&
@@ -287,6 +311,11 @@ Options parseOptions(int argc, const char* const* argv) {
         throw UsageError("--pixel renders headless and cannot be combined with --window, --bench "
                          "or --bench-window (the window's I key prints the story of the pixel "
                          "under the mouse)");
+    if (options.checkOnly &&
+        (!options.outputPath.empty() || options.benchFrames > 0 || options.benchWindowFrames > 0 ||
+         options.pixelGiven || options.forceWindow))
+        throw UsageError("--check renders nothing and cannot be combined with -o, --bench, "
+                         "--bench-window, --pixel or --window");
     if (options.benchWindowFrames > 0 && (!options.outputPath.empty() || options.benchFrames > 0))
         throw UsageError(
             "--bench-window cannot be combined with -o or --bench, which render headless");

@@ -28,7 +28,9 @@ struct Options {
     bool validate = false;         // --validate: Khronos layer on, any message fails the run
     Acceleration acceleration = Acceleration::Auto; // --accel auto|bvh|none
     bool showHelp = false;
-    bool useCache = true; // --no-cache: no shader or pipeline cache on disk
+    bool showVersion = false; // --version: the program's, Vulkan's headers' and glslang's
+    bool checkOnly = false; // --check: parse and validate the scene, print what it holds; no Vulkan
+    bool useCache = true;   // --no-cache: no shader or pipeline cache on disk
     std::uint32_t regionSide =
         0;                 // --region-size N (hidden, for tests): fixed N x N submissions; 0 adapts
     bool progress = false; // --progress: report progress even for a short render
@@ -64,3 +66,6 @@ struct UsageError : std::runtime_error {
 Options parseOptions(int argc, const char* const* argv);
 
 std::string usageText();
+
+// The line after a usage error, in place of the whole of usageText().
+inline constexpr const char* kSeeHelp = "Run 'Raytracer --help' for the list of options.\n";

@@ -82,10 +82,13 @@ std::vector<std::uint32_t> compileComputeShader(const std::string& mainFile,
 }
 
 // Bump the "v" when the settings of compileComputeShader above change.
+std::string glslangVersion() {
+    return std::to_string(GLSLANG_VERSION_MAJOR) + "." + std::to_string(GLSLANG_VERSION_MINOR) +
+           "." + std::to_string(GLSLANG_VERSION_PATCH);
+}
+
 std::string shaderCompilerRecipe() {
-    return "glslang " + std::to_string(GLSLANG_VERSION_MAJOR) + "." +
-           std::to_string(GLSLANG_VERSION_MINOR) + "." + std::to_string(GLSLANG_VERSION_PATCH) +
-           "; vulkan1.2 spv1.5 optimized; v1";
+    return "glslang " + glslangVersion() + "; vulkan1.2 spv1.5 optimized; v1";
 }
 
 ShaderSourceLoader directoryShaderLoader(const std::filesystem::path& directory) {

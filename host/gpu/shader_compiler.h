@@ -30,6 +30,9 @@ std::vector<std::uint32_t> compileComputeShader(const std::string& mainFile,
 // reuse an old compile.
 std::string shaderCompilerRecipe();
 
+// The glslang this program was built with: "12.0.0".
+std::string glslangVersion();
+
 // A loader over the files of a folder (--shader-dir): "shade.glsl" is DIR/shade.glsl.
 // Read afresh on every call, so a recompile sees the files as they are now.
 ShaderSourceLoader directoryShaderLoader(const std::filesystem::path& directory);

@@ -4,6 +4,7 @@
 
 #include "gpu/vk_check.h"
 #include "scene/scene_loader.h"
+#include "scene/warning_summary.h"
 
 #include <cstdio>
 #include <exception>
@@ -46,8 +47,8 @@ void reloadScene(Viewer& viewer) {
         std::fprintf(stderr, "%s\nKeeping the last good scene.\n", error.what());
         return;
     }
-    for (const std::string& warning : scene.warnings)
-        std::fprintf(stderr, "%s\n", warning.c_str());
+    for (const std::string& line : summarisedWarnings(scene.warnings))
+        std::fprintf(stderr, "%s\n", line.c_str());
     if (rebuildRenderer(viewer, scene)) {
         viewer.scene = std::move(scene);
         std::fprintf(stderr, "Reloaded %s\n", viewer.options->scenePath.string().c_str());

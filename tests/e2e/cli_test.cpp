@@ -4,7 +4,9 @@
 #include "test_support.h"
 
 #include <glm/vec2.hpp>
+#include <glslang/build_info.h>
 #include <gtest/gtest.h>
+#include <vulkan/vulkan_core.h>
 
 #include <chrono>
 #include <csignal>
@@ -35,6 +37,28 @@ TEST(CommandLine, HelpPrintsUsageAndSucceeds) {
         EXPECT_NE(run.out.find(option), std::string::npos) << option << " missing from " << run.out;
 }
 
+// The lines expected from CMake's project() VERSION and the headers this test was built with
+// (the same packages as the program's).
+std::string expectedVersionText() {
+    const std::uint32_t vulkan = VK_HEADER_VERSION_COMPLETE;
+    return "Raytracer " RAYTRACER_VERSION "\nVulkan headers " +
+           std::to_string(VK_API_VERSION_MAJOR(vulkan)) + "." +
+           std::to_string(VK_API_VERSION_MINOR(vulkan)) + "." + std::to_string(VK_HEADER_VERSION) +
+           "\nglslang " + std::to_string(GLSLANG_VERSION_MAJOR) + "." +
+           std::to_string(GLSLANG_VERSION_MINOR) + "." + std::to_string(GLSLANG_VERSION_PATCH) +
+           "\n";
+}
+
+TEST(CommandLine, VersionNamesTheProgramVulkanAndGlslang) {
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"--version"}, {"x.scene", "--version", "--width", "8"}}) {
+        ProcessResult run = runRaytracer(args);
+        EXPECT_EQ(run.exitCode, 0) << run.err;
+        EXPECT_EQ(run.out, expectedVersionText());
+        EXPECT_EQ(run.err, ""); // no "Device:" line: no Vulkan instance was made
+    }
+}
+
 TEST(CommandLine, MissingSceneArgumentIsAUsageError) {
     ProcessResult run = runRaytracer({});
     EXPECT_EQ(run.exitCode, 2);
@@ -52,7 +76,7 @@ TEST(CommandLine, BadOptionValuesAreUsageErrors) {
         {{"x.scene", "--background", "1,1"},
          "--background expects three non-negative numbers R,G,B, got '1,1'"},
         {{"x.scene", "--width"}, "--width expects a value"},
-        {{"x.scene", "--frobnicate"}, "unknown option '--frobnicate' (see --help)"},
+        {{"x.scene", "--frobnicate"}, "unknown option '--frobnicate'"},
         {{"a.scene", "b.scene"}, "more than one scene file given: 'a.scene' and 'b.scene'"},
         {{"x.scene", "--sampler", "halton"},
          "--sampler expects grid, stratified or r2, got 'halton'"},
@@ -72,6 +96,126 @@ TEST(CommandLine, BadOptionValuesAreUsageErrors) {
         EXPECT_EQ(run.exitCode, 2) << message;
         EXPECT_NE(run.err.find("error: " + message), std::string::npos) << run.err;
     }
+}
+
+// A usage error is two lines: the error, then where the options are listed (not the whole
+// help, which would scroll the error out of sight).
+TEST(CommandLine, UsageErrorIsTheErrorAndOneLineToTheHelp) {
+    const std::string seeHelp = "Run 'Raytracer --help' for the list of options.\n";
+    const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+        {{"x.scene", "--widht", "800"}, "error: unknown option '--widht'; did you mean --width?\n"},
+        {{"x.scene", "--offst=scaled"},
+         "error: unknown option '--offst'; did you mean --offset?\n"},
+        {{"x.scene", "--frobnicate"}, "error: unknown option '--frobnicate'\n"},
+        {{"x.scene", "--validate=yes"}, "error: --validate takes no value, got '--validate=yes'\n"},
+        {{"x.scene", "--width=0"},
+         "error: --width expects a whole number from 1 to 16384, got '0'\n"},
+        {{}, "error: no scene file given\n"},
+    };
+    for (const auto& [args, message] : cases) {
+        ProcessResult run = runRaytracer(args);
+        EXPECT_EQ(run.exitCode, 2) << run.err;
+        EXPECT_EQ(run.err, message + seeHelp);
+        EXPECT_EQ(run.out, "");
+    }
+}
+
+// --opt=value renders what --opt value renders: the same bytes.
+TEST(CommandLine, OptionEqualsValueRendersAsTwoWords) {
+    std::filesystem::path dir = freshOutputDir("cli/equals");
+    std::filesystem::path scene = writeScene(dir, minimalScene());
+    const std::string joined = (dir / "joined.png").string(), split = (dir / "split.png").string();
+    ProcessResult a = runRaytracer(
+        {scene.string(), "--output=" + joined, "--width=24", "--height=18", "--offset=scaled"});
+    ProcessResult b = runRaytracer(
+        {scene.string(), "-o", split, "--width", "24", "--height", "18", "--offset", "scaled"});
+    ASSERT_EQ(a.exitCode, 0) << a.err;
+    ASSERT_EQ(b.exitCode, 0) << b.err;
+    EXPECT_EQ(readPng(joined).width, 24);
+    EXPECT_EQ(readWholeFile(joined), readWholeFile(split));
+}
+
+// --check on a scene written here, whose counts and box are known from its text: two
+// spheres sharing a material, a triangle with a zero normal and two vertex materials, two
+// lights (outside the box, which holds only what rays can hit).
+TEST(CommandLine, CheckPrintsWhatTheSceneHolds) {
+    std::filesystem::path dir = freshOutputDir("cli/check");
+    const std::string vertex = "dif: 0.5 0.5 0.5\nspe: 0 0 0\nshi: 1\n";
+    const std::string other = "dif: 0.25 0.5 1\nspe: 0.125 0 0\nshi: 8\n";
+    const std::string text = "5\namb: 0.1 0.1 0.1\n"
+                             "sphere\npos: 0 0 -3\nrad: 1\n" +
+                             vertex + "sphere\npos: 2 0.5 -4\nrad: 0.5\n" + vertex +
+                             "triangle\npos: -2 -1 -5\nnor: 0 0 0\n" + vertex +
+                             "pos: 1 -1 -5\nnor: 0 0 1\n" + other + "pos: 0 3 -5\nnor: 0 0 1\n" +
+                             vertex +
+                             "light\npos: 10 10 10\ncol: 1 1 1\nlight\npos: -9 0 0\ncol: 1 1 1\n";
+    const std::filesystem::path scene = writeScene(dir, text);
+    ProcessResult run = runRaytracer({scene.string(), "--check"});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.out, scene.string() + ": valid\n"
+                                        "spheres: 2\ntriangles: 1\nlights: 2\nmaterials: 2\n"
+                                        "bounds: -2,-1,-5 to 2.5,3,-2\nwarnings: 1\n");
+    // The warning as a render prints it, and nothing of Vulkan ("Device: ...").
+    EXPECT_EQ(run.err,
+              scene.string() + ":17: warning: the triangle's vertex 1 normal has zero length\n");
+    EXPECT_FALSE(std::filesystem::exists(dir / "input.png"));
+}
+
+// A mesh of 35,000 zero normals: twenty of them on stderr, then one line for the rest.
+TEST(CommandLine, ManyWarningsOfAKindAreSummarised) {
+    std::filesystem::path dir = freshOutputDir("cli/many-warnings");
+    const int count = 35000;
+    std::string text = std::to_string(count) + "\namb: 0 0 0\n";
+    const std::string material = "dif: 0.5 0.5 0.5\nspe: 0 0 0\nshi: 1\n";
+    for (int i = 0; i < count; ++i)
+        text += "triangle\npos: 0 0 -1\nnor: 0 0 0\n" + material + "pos: 1 0 -1\nnor: 0 0 1\n" +
+                material + "pos: 0 1 -1\nnor: 0 0 1\n" + material;
+    const std::filesystem::path scene = writeScene(dir, text);
+    ProcessResult run = runRaytracer({scene.string(), "--check"});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    std::string expected;
+    for (int i = 0; i < 20; ++i) // triangle i's first normal is on line 5 + 16 i
+        expected += scene.string() + ":" + std::to_string(5 + 16 * i) +
+                    ": warning: the triangle's vertex 1 normal has zero length\n";
+    expected += scene.string() + ": warning: ... and 34,980 more warnings that the triangle's "
+                                 "vertex N normal has zero length\n";
+    EXPECT_EQ(run.err, expected);
+    EXPECT_NE(run.out.find("\nwarnings: 35000\n"), std::string::npos) << run.out;
+}
+
+// -o into a folder that is not there names the folder, before any Vulkan.
+TEST(CommandLine, MissingOutputFolderIsNamed) {
+    std::filesystem::path dir = freshOutputDir("cli/missing-folder");
+    const std::filesystem::path scene = writeScene(dir, minimalScene());
+    ProcessResult run = runRaytracer({scene.string(), "-o", "missing/dir/out.png"}, 60, dir);
+    EXPECT_EQ(run.exitCode, 1) << run.err;
+    EXPECT_EQ(run.err, "error: missing/dir/out.png: the folder missing/dir does not exist\n");
+    EXPECT_FALSE(std::filesystem::exists(dir / "missing"));
+    // Once the folder exists the same command writes the image.
+    std::filesystem::create_directories(dir / "missing" / "dir");
+    ProcessResult again = runRaytracer(
+        {scene.string(), "-o", "missing/dir/out.png", "--width", "8", "--height", "6"}, 60, dir);
+    EXPECT_EQ(again.exitCode, 0) << again.err;
+    EXPECT_EQ(readPng(dir / "missing" / "dir" / "out.png").width, 8);
+}
+
+// A malformed scene: status 3 and the very message a render gives, before any Vulkan.
+TEST(CommandLine, CheckReportsAMalformedSceneAsARenderDoes) {
+    std::filesystem::path dir = freshOutputDir("cli/check-malformed");
+    const std::filesystem::path scene =
+        writeScene(dir, "1\namb: 0.1 0.1 0.1\nsphere\npos: 0 0 -3\nrad: -1\n");
+    ProcessResult check = runRaytracer({scene.string(), "--check"});
+    ProcessResult render = runRaytracer({scene.string(), "-o", (dir / "out.png").string()});
+    EXPECT_EQ(check.exitCode, 3) << check.err;
+    EXPECT_EQ(render.exitCode, 3) << render.err;
+    EXPECT_EQ(check.err, render.err);
+    EXPECT_EQ(check.err.rfind(scene.string() + ":5: error: ", 0), 0u) << check.err;
+    EXPECT_EQ(check.out, "");
+    ProcessResult combined = runRaytracer({scene.string(), "--check", "-o", "x.png"});
+    EXPECT_EQ(combined.exitCode, 2);
+    EXPECT_EQ(combined.err, "error: --check renders nothing and cannot be combined with -o, "
+                            "--bench, --bench-window, --pixel or --window\n"
+                            "Run 'Raytracer --help' for the list of options.\n");
 }
 
 TEST(CommandLine, MissingSceneFileNamesTheFileAndWritesNothing) {

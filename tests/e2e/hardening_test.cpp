@@ -180,6 +180,44 @@ TEST(EnvironmentFaults, NoVulkanDriverIsAClearErrorNotACrash) {
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png.tmp"));
 }
 
+// Without a driver the loader fails any instance; --version makes none, so it answers as it
+// does with one (cli_test checks those lines).
+TEST(EnvironmentFaults, VersionNeedsNoVulkanDriver) {
+    const std::string withDriver = runRaytracer({"--version"}).out;
+    std::filesystem::path dir = freshOutputDir("hardening/version-no-driver");
+    const std::string missing = (dir / "no-such-icd.json").string();
+    ScopedEnvironment icd("VK_ICD_FILENAMES", missing.c_str());
+    ScopedEnvironment driver("VK_DRIVER_FILES", missing.c_str());
+    ProcessResult run = runRaytracer({"--version"});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.out.rfind("Raytracer " RAYTRACER_VERSION "\n", 0), 0u) << run.out;
+    EXPECT_EQ(run.out, withDriver);
+    EXPECT_EQ(run.err, "");
+}
+
+// --check makes no instance either: a valid scene passes and a malformed one fails, with
+// no driver visible, exactly as they do with one.
+TEST(EnvironmentFaults, CheckNeedsNoVulkanDriver) {
+    std::filesystem::path dir = freshOutputDir("hardening/check-no-driver");
+    const std::filesystem::path valid = writeScene(dir);
+    const std::filesystem::path malformed = dir / "malformed.scene";
+    writeTextFile(malformed, "1\namb: 0.1 0.1 0.1\nsphere\npos: 0 0\n");
+    const ProcessResult validWithDriver = runRaytracer({valid.string(), "--check"});
+    const ProcessResult malformedWithDriver = runRaytracer({malformed.string(), "--check"});
+    const std::string missing = (dir / "no-such-icd.json").string();
+    ScopedEnvironment icd("VK_ICD_FILENAMES", missing.c_str());
+    ScopedEnvironment driver("VK_DRIVER_FILES", missing.c_str());
+    const ProcessResult validRun = runRaytracer({valid.string(), "--check"});
+    EXPECT_EQ(validRun.exitCode, 0) << validRun.err;
+    EXPECT_TRUE(contains(validRun.out, ": valid\nspheres: ")) << validRun.out;
+    EXPECT_EQ(validRun.out, validWithDriver.out);
+    EXPECT_EQ(validRun.err, validWithDriver.err);
+    const ProcessResult malformedRun = runRaytracer({malformed.string(), "--check"});
+    EXPECT_EQ(malformedRun.exitCode, 3) << malformedRun.err;
+    EXPECT_TRUE(contains(malformedRun.err, malformed.string() + ":")) << malformedRun.err;
+    EXPECT_EQ(malformedRun.err, malformedWithDriver.err);
+}
+
 TEST(EnvironmentFaults, WindowAskedForWithoutADisplayIsAnError) {
     std::filesystem::path dir = freshOutputDir("hardening/window");
     std::filesystem::path scene = writeScene(dir);
@@ -217,7 +255,8 @@ TEST(NothingLost, UnwritableOutputFailsBeforeRenderingAndWritesNothing) {
     writeTextFile(dir / "a-file", "not a folder");
     std::filesystem::create_directories(dir / "folder.png");
     const std::vector<std::pair<std::filesystem::path, std::string>> cases = {
-        {dir / "no-such-folder" / "out.png", "out.png.tmp: No such file or directory"},
+        {dir / "no-such-folder" / "out.png",
+         "the folder " + (dir / "no-such-folder").string() + " does not exist\n"},
         {dir / "a-file" / "out.png", "out.png.tmp: Not a directory"},
         {"/proc/raytracer-out.png",
          "cannot create /proc/raytracer-out.png.tmp"}, // unwritable, even for root

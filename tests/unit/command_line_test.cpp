@@ -3,6 +3,7 @@
 // the text is the same when printed again. Also the window's headless command, word for
 // word. No Vulkan, no window.
 #include "cli/command_line.h"
+#include "cli/option_suggestion.h"
 #include "cli/options.h"
 #include "shared.h"
 
@@ -97,6 +98,8 @@ std::vector<std::vector<std::string>> optionSets() {
         {"a.scene", "-o", "b.png", "--width", "20", "--height", "10", "--pixel", "19,9"},
         {"--dump-shaders", "dumped shaders"},
         {"--help"},
+        {"--version"},
+        {"a.scene", "--check"},
         {"a.scene", "--validate", "--no-cache", "--progress", "--window", "--redraw-continuously",
          "--general-kernel", "--storage-reads"},
     };
@@ -216,3 +219,86 @@ TEST(ScreenshotCommand, QuotesTheSceneAndShaderFolder) {
 }
 
 } // namespace
+
+namespace {
+
+// parse's UsageError message, or "" when words parse.
+std::string usageErrorOf(const std::vector<std::string>& words) {
+    try {
+        parse(words);
+    } catch (const UsageError& error) {
+        return error.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST(CommandLine, OptionEqualsValueIsTheSameAsTwoWords) {
+    const std::vector<std::pair<std::string, std::string>> pairs = {{"--width", "800"},
+                                                                    {"--height", "16"},
+                                                                    {"--offset", "scaled"},
+                                                                    {"--spp", "4"},
+                                                                    {"--sampler", "grid"},
+                                                                    {"--fov", "35.5"},
+                                                                    {"--camera-pos", "1,2,3"},
+                                                                    {"--background", "0,0.5,1"},
+                                                                    {"--accel", "none"},
+                                                                    {"--output", "o.pfm"},
+                                                                    {"--seed", "7"},
+                                                                    {"--depth", "0"},
+                                                                    {"--precision", "fp64"},
+                                                                    {"--pixel", "3,4"},
+                                                                    {"--device", "a=b"},
+                                                                    {"--triangle-test", "mt"},
+                                                                    {"--sphere-test", "naive"},
+                                                                    {"--threads", "2"}};
+    for (const auto& [flag, text] : pairs) {
+        const Options joined = parse({"x.scene", flag + "=" + text});
+        EXPECT_EQ(joined, parse({"x.scene", flag, text})) << flag << "=" << text;
+        EXPECT_NE(joined, parse({"x.scene"})) << flag << "=" << text << " changed nothing";
+    }
+    // Only the first '=' splits: the rest belongs to the value.
+    EXPECT_EQ(parse({"x.scene", "--device=a=b"}).device, "a=b");
+    // The value after '=' is checked as the separate word is.
+    EXPECT_EQ(usageErrorOf({"x.scene", "--width="}),
+              "--width expects a whole number from 1 to 16384, got ''");
+    EXPECT_EQ(usageErrorOf({"x.scene", "--offset=far"}),
+              "--offset expects fixed, scaled or error-bound, got 'far'");
+}
+
+TEST(CommandLine, SwitchGivenAValueIsAUsageError) {
+    for (const char* flag :
+         {"--help", "--version", "--validate", "--no-cache", "--progress", "--window"})
+        EXPECT_EQ(usageErrorOf({"x.scene", std::string(flag) + "=yes"}),
+                  std::string(flag) + " takes no value, got '" + flag + "=yes'");
+    EXPECT_EQ(usageErrorOf({"x.scene", "--frobnicate=3"}), "unknown option '--frobnicate'");
+}
+
+TEST(CommandLine, UnknownOptionNamesTheNearMisses) {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"--widht", "; did you mean --width?"},    // two letters swapped: distance 2
+        {"--wdth", "; did you mean --width?"},     // one left out
+        {"--thread", "; did you mean --threads?"}, // the plural forgotten
+        {"--Width", "; did you mean --width?"},    // case
+        {"--accell", "; did you mean --accel?"},
+        {"--camera", "; did you mean --camera-pos, --camera-target or --camera-up?"}, // prefix
+        {"--dump", "; did you mean --dump-shaders?"},
+        {"--frobnicate", ""}, // nothing close
+        {"--x", ""},          // too short to mean one
+        {"-x", ""},
+        {"--general-kernl", ""}, // hidden options are not suggested
+    };
+    for (const auto& [typed, hint] : cases)
+        EXPECT_EQ(usageErrorOf({"x.scene", typed}), "unknown option '" + typed + "'" + hint);
+}
+
+// Every suggestion is an option that parseOptions accepts: the list comes from --help.
+TEST(CommandLine, SuggestedOptionsAreRealOptions) {
+    const std::vector<std::string> options = documentedOptions(usageText());
+    EXPECT_GE(options.size(), 29u); // every one --help listed when this was written
+    for (const std::string& option : options) {
+        const std::string error = usageErrorOf({"x.scene", option, "1"});
+        EXPECT_EQ(error.find("unknown option"), std::string::npos) << option << ": " << error;
+    }
+}

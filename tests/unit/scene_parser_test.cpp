@@ -2,6 +2,7 @@
 // message, the warnings, and the sample scenes of the classic assignment.
 #include "scene/scene_lexer.h"
 #include "scene/scene_loader.h"
+#include "scene/warning_summary.h"
 
 #include <gtest/gtest.h>
 
@@ -966,3 +967,58 @@ TEST(SceneParallel, LargeSceneIsTheSameInChunks) {
 }
 
 } // namespace
+
+namespace {
+
+// count triangles, each with a zero normal at vertex (1 + i % 3) and, every fourth one,
+// zero area too: two kinds of warning, interleaved.
+std::string zeroNormalTriangles(int count) {
+    std::string text = std::to_string(count) + "\namb: 0 0 0\n";
+    const std::string material = "dif: 0.5 0.5 0.5\nspe: 0 0 0\nshi: 1\n";
+    for (int i = 0; i < count; ++i) {
+        const bool flat = i % 4 == 0;
+        text += "triangle\n";
+        for (int v = 0; v < 3; ++v)
+            text += "pos: " + std::to_string(flat ? 0 : v) + " " + std::to_string(v == 2) +
+                    " -1\nnor: " + (v == i % 3 ? "0 0 0" : "0 0 1") + "\n" + material;
+    }
+    return text;
+}
+
+} // namespace
+
+TEST(SceneWarnings, KindIsTheMessageWithItsNumbersWrittenN) {
+    EXPECT_EQ(warningKind("a.scene:17: warning: the triangle's vertex 2 normal has zero length"),
+              "the triangle's vertex N normal has zero length");
+    EXPECT_EQ(warningKind("x:y.scene:3: warning: the sphere's diffuse colour 1.5e+2 is above 1; "
+                          "used as given"),
+              "the sphere's diffuse colour N is above N; used as given");
+    EXPECT_EQ(warningKind("a.scene:1: warning: the triangle has zero area (its vertices are "
+                          "collinear or coincide)"),
+              "the triangle has zero area (its vertices are collinear or coincide)");
+}
+
+// 35,005 zero normals and 8,752 flat triangles: the first 20 of each, in file order, then
+// one line for each kind's rest. Counts and the lines kept come from the text as generated.
+TEST(SceneWarnings, BeyondTwentyOfAKindOneLineSaysHowManyMore) {
+    const int count = 35005;
+    const Scene scene = parseScene(zeroNormalTriangles(count), "mesh.scene");
+    const int flat = (count + 3) / 4;
+    ASSERT_EQ(scene.warnings.size(), std::size_t(count + flat));
+    const std::vector<std::string> lines = summarisedWarnings(scene.warnings);
+    ASSERT_EQ(lines.size(), 20u + 20u + 2u);
+    std::vector<std::string> expected;
+    int normals = 0, flats = 0;
+    for (const std::string& warning : scene.warnings) {
+        int& seen = warning.find("zero length") != std::string::npos ? normals : flats;
+        if (seen++ < 20) expected.push_back(warning);
+    }
+    expected.push_back("mesh.scene: warning: ... and 34,985 more warnings that the triangle's "
+                       "vertex N normal has zero length");
+    expected.push_back("mesh.scene: warning: ... and 8,732 more warnings that the triangle has "
+                       "zero area (its vertices are collinear or coincide)");
+    EXPECT_EQ(lines, expected);
+    // Up to twenty of a kind, every warning is printed as it is.
+    const Scene few = parseScene(zeroNormalTriangles(20), "few.scene");
+    EXPECT_EQ(summarisedWarnings(few.warnings), few.warnings);
+}

@@ -1,0 +1,14 @@
+// "did you mean --width?" for an unknown option: the options --help documents that are a
+// near miss of what was typed. Kept apart from options.cpp, which only reads options.
+#pragma once
+
+#include <string>
+#include <vector>
+
+// Every long option --help names ("--width", "--offset", ...), each once, in its order.
+std::vector<std::string> documentedOptions(const std::string& helpText);
+
+// The candidates closest to typed: those within an edit distance of 2 (the closest
+// ones), else those that typed begins; at most three, joined as "--a, --b or --c".
+// Empty when none is close or typed is too short ("--" or "--x") to mean anything.
+std::string closeOptions(const std::string& typed, const std::vector<std::string>& candidates);

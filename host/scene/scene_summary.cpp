@@ -1,0 +1,53 @@
+#include "scene/scene_summary.h"
+
+#include <array>
+#include <charconv>
+#include <set>
+
+namespace {
+
+// The shortest text that reads back as the same double.
+std::string shortest(double value) {
+    char text[32];
+    auto [end, error] = std::to_chars(text, text + sizeof text, value);
+    return error == std::errc() ? std::string(text, end) : std::string("?");
+}
+
+std::string triple(const glm::dvec3& v) {
+    return shortest(v.x) + "," + shortest(v.y) + "," + shortest(v.z);
+}
+
+using MaterialKey = std::array<double, 7>;
+
+MaterialKey keyOf(const Material& m) {
+    return {m.diffuse.x,  m.diffuse.y,  m.diffuse.z, m.specular.x,
+            m.specular.y, m.specular.z, m.shininess};
+}
+
+} // namespace
+
+std::string sceneSummary(const Scene& scene) {
+    std::set<MaterialKey> materials;
+    glm::dvec3 low(0.0), high(0.0);
+    bool any = false;
+    auto include = [&](const glm::dvec3& a, const glm::dvec3& b) {
+        low = any ? glm::min(low, a) : a;
+        high = any ? glm::max(high, b) : b;
+        any = true;
+    };
+    for (const Sphere& sphere : scene.spheres) {
+        materials.insert(keyOf(sphere.material));
+        include(sphere.center - sphere.radius, sphere.center + sphere.radius);
+    }
+    for (const Triangle& triangle : scene.triangles)
+        for (const Vertex& vertex : triangle.vertices) {
+            materials.insert(keyOf(vertex.material));
+            include(vertex.position, vertex.position);
+        }
+    return "spheres: " + std::to_string(scene.spheres.size()) + "\n" +
+           "triangles: " + std::to_string(scene.triangles.size()) + "\n" +
+           "lights: " + std::to_string(scene.lights.size()) + "\n" +
+           "materials: " + std::to_string(materials.size()) + "\n" + "bounds: " +
+           (any ? triple(low) + " to " + triple(high) : "none (no spheres or triangles)") + "\n" +
+           "warnings: " + std::to_string(scene.warnings.size()) + "\n";
+}
