@@ -44,13 +44,13 @@ void printPixelStory(const Options& options, Renderer& renderer, const Context& 
     std::cout << pixelStoryJson(story, renderer.sources, header) << std::flush;
 }
 
-// Renders headless: one frame to options.outputPath (PNG, or PFM/EXR floats), a benchmark,
-// or (--pixel without -o) only the story of one pixel.
+// Renders headless: one frame to options.outputPath (PNG, or PFM/EXR floats), a benchmark
+// (with -o, its last frame written too), or (--pixel without -o) only the story of one pixel.
 // Before any work, the output file is known to be writable (its .tmp exists) and the
 // image to fit the device; a failure or Ctrl-C afterwards removes the .tmp again.
 void runHeadless(const Options& options, const Scene& scene, const StartupTimes& startup) {
     installInterruptHandlers();
-    const bool writing = options.benchFrames == 0 && !options.outputPath.empty();
+    const bool writing = !options.outputPath.empty();
     if (writing) reservePngOutput(options.outputPath);
     OnFailure removeOutput([&] {
         if (writing) releasePngOutput(options.outputPath);
@@ -72,11 +72,12 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
     settings.floatOutput = writing && imageFormatOf(options.outputPath) != ImageFormat::Png;
     createRenderer(renderer, context, scene, settings);
     createHeadlessTarget(target, context, renderer, options.regionSide);
-    if (options.benchFrames > 0) {
+    if (options.benchFrames > 0)
         std::cout << runBenchmark(context, renderer, target, options, startup) << std::endl;
-    } else if (writing) {
+    else if (writing)
         renderHeadlessFrame(target, context, renderer,
                             options.progress ? ProgressMode::Always : ProgressMode::Auto);
+    if (writing) { // the frame just rendered, or the benchmark's last
         throwIfInterrupted();
         if (settings.floatOutput)
             writeFloatImage(options.outputPath, readHeadlessFloatImage(target, renderer));

@@ -149,6 +149,7 @@ std::string usageText() {
            "  --camera-target X,Y,Z point looked at (default 0,0,-1 from the eye: down -z)\n"
            "  --camera-up X,Y,Z     up direction (default 0,1,0)\n"
            "  --bench N             render N frames headless after a warm-up, print JSON timings\n"
+           "                        (with -o, the last frame is written too)\n"
            "  --pixel X,Y           print the ray tree of pixel X,Y (column, row) as the kernel\n"
            "                        traced it, as JSON on stdout; headless; alone without -o\n"
            "  --device NAME|INDEX   use this Vulkan device (default: a real GPU before a CPU one)\n"

@@ -376,6 +376,21 @@ TEST(CommandLine, BenchPrintsOneJsonLineWithEveryKey) {
     EXPECT_EQ(json.find("null"), std::string::npos) << "lavapipe has timestamps: " << json;
 }
 
+// --bench N -o out.png writes the last timed frame: the same bytes as the plain render.
+TEST(CommandLine, BenchWithAnOutputWritesItsLastFrame) {
+    std::filesystem::path dir = freshOutputDir("cli/bench-output");
+    std::filesystem::path scene = writeScene(dir, minimalScene());
+    const std::filesystem::path benched = dir / "benched.png", plain = dir / "plain.png";
+    ProcessResult run = runRaytracer({scene.string(), "--bench", "2", "-o", benched.string(),
+                                      "--width", "64", "--height", "48", "--validate"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(benchJson(run).find("\"frames\": 2"), std::string::npos) << run.out;
+    ProcessResult reference =
+        runRaytracer({scene.string(), "-o", plain.string(), "--width", "64", "--height", "48"});
+    ASSERT_EQ(reference.exitCode, 0) << reference.err;
+    EXPECT_EQ(readWholeFile(benched), readWholeFile(plain));
+}
+
 TEST(CommandLine, BenchReportsTheKernelChoices) {
     std::filesystem::path dir = freshOutputDir("cli/bench-choices");
     std::filesystem::path scene = writeScene(dir, minimalScene());
