@@ -37,9 +37,8 @@ GpuMaterial vertexMaterial(uint v) {
 // point gamma(3) of |o| + |t d| plus d times t's error; along the normal, t's error counts
 // only times the cosine of the incidence, (err(num) + |t| err(den)) / |n| (derived in
 // docs/accuracy.md).
-void onTrianglePlane(Ray ray, rvec3 a, rvec3 b, rvec3 c, inout SurfacePoint s) {
-    rvec3 e1 = b - a, e2 = c - a;
-    rvec3 n = cross(e1, e2);
+// a is a corner, e1 and e2 the edges from it, n = cross(e1, e2) (surfaceAt's, unnormalised).
+void onTrianglePlane(Ray ray, rvec3 a, rvec3 e1, rvec3 e2, rvec3 n, inout SurfacePoint s) {
     real nLength = length(n);
     real den = dot(n, ray.direction);
     if (!(nLength > 0.0) || den == 0.0) return; // edge-on: keep the barycentric point
@@ -84,12 +83,15 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
         uvec4 v = fetchTriangle(hit.index);
         rvec3 w = hit.barycentric;
         rvec3 a = fetchPosition(v.x), b = fetchPosition(v.y), c = fetchPosition(v.z);
-        // From the barycentrics rather than o + t d: its error scales with the vertices only.
+        // The barycentric sum, whose error scales with the vertices only; with --offset
+        // error-bound, onTrianglePlane takes o + t d instead where that bound is tighter.
         s.position = w.x * a + w.y * b + w.z * c;
         s.magnitude = w.x * abs(a) + w.y * abs(b) + w.z * abs(c);
-        s.geometricNormal = normalizeOr(cross(b - a, c - a), -ray.direction);
+        rvec3 e1 = b - a, e2 = c - a;
+        rvec3 faceNormal = cross(e1, e2);
+        s.geometricNormal = normalizeOr(faceNormal, -ray.direction);
         s.normalError = dot(abs(s.geometricNormal), GAMMA_7 * s.magnitude);
-        if (rayOffsetKind == RAY_OFFSET_ERROR_BOUND) onTrianglePlane(ray, a, b, c, s);
+        if (rayOffsetKind == RAY_OFFSET_ERROR_BOUND) onTrianglePlane(ray, a, e1, e2, faceNormal, s);
         rvec3 n = w.x * fetchNormal(v.x) + w.y * fetchNormal(v.y) + w.z * fetchNormal(v.z);
         s.normal = normalizeOr(n, s.geometricNormal);
         GpuMaterial ma = vertexMaterial(v.x);
