@@ -5,13 +5,13 @@
 // these loops) to a loop over the 8 SIMD lanes with a branch and a bounds check each, and
 // a texel fetch to one gather, whatever the control flow. On a GPU both are one memory
 // instruction per lane; texel buffers are the classic layout for hierarchies there too.
-// In fp64 the spheres and vertex positions are doubles and stay on the storage path; the
+// In fp64 the spheres and triangle corners are doubles and stay on the storage path; the
 // other arrays are floats and uints in both precisions.
 // Needs: the scene's storage bindings and texelReads (trace.comp).
 
 layout(set = 0, binding = BINDING_SPHERE_TEXELS) uniform samplerBuffer sphereTexels;
-layout(set = 0, binding = BINDING_TRIANGLE_TEXELS) uniform usamplerBuffer triangleTexels;
-layout(set = 0, binding = BINDING_POSITION_TEXELS) uniform samplerBuffer positionTexels;
+layout(set = 0, binding = BINDING_CORNER_TEXELS) uniform samplerBuffer cornerTexels;
+layout(set = 0, binding = BINDING_LAST_VERTEX_TEXELS) uniform usamplerBuffer lastVertexTexels;
 layout(set = 0, binding = BINDING_BVH_NODE_TEXELS) uniform samplerBuffer bvhNodeTexels;
 layout(set = 0, binding = BINDING_NORMAL_TEXELS) uniform samplerBuffer normalTexels;
 layout(set = 0, binding = BINDING_MATERIAL_TEXELS) uniform samplerBuffer materialTexels;
@@ -27,18 +27,28 @@ rvec4 fetchSphere(uint i) {
     return spheres[i];
 }
 
-// Triangle i: its three vertex indices in xyz, its flat patch in w.
-uvec4 fetchTriangle(uint i) {
-    if (texelReads) return texelFetch(triangleTexels, int(i));
-    return triangles[i];
+// Corner k (0, 1, 2) of triangle i: its position xyz, and in w the word of shared.h
+// (BINDING_TRIANGLE_CORNERS), which cornerWord reads.
+rvec4 fetchCorner(uint i, uint k) {
+#ifndef RT_FP64
+    if (texelReads) return texelFetch(cornerTexels, int(3u * i + k));
+#endif
+    return triangleCorners[3u * i + k];
 }
 
-// The position of vertex v.
-rvec3 fetchPosition(uint v) {
-#ifndef RT_FP64
-    if (texelReads) return texelFetch(positionTexels, int(v)).xyz;
+// The uint in a corner's w: corner 0's flat patch, corner 1's and 2's vertex indices.
+uint cornerWord(rvec4 corner) {
+#ifdef RT_FP64
+    return uint(corner.w);
+#else
+    return floatBitsToUint(corner.w);
 #endif
-    return vertexPositions[v].xyz;
+}
+
+// The vertex index of triangle i's corner 2 (those of corners 0 and 1 ride in the corners).
+uint fetchLastVertex(uint i) {
+    if (texelReads) return texelFetch(lastVertexTexels, int(i)).x;
+    return triangleLastVertices[i];
 }
 
 // Hierarchy node i: four texels, one per vec4 of GpuBvhNode.
@@ -52,25 +62,11 @@ GpuBvhNode fetchBvhNode(uint i) {
     return bvhNodes[i];
 }
 
-// The index into materials[] of vertex v: it rides in the position's w, as the float's bits
-// (fp32) or as a double's exact integer value (fp64).
-uint fetchVertexMaterialIndex(uint v) {
-#ifdef RT_FP64
-    return uint(vertexPositions[v].w);
-#else
-    if (texelReads) return floatBitsToUint(texelFetch(positionTexels, int(v)).w);
-    return floatBitsToUint(vertexPositions[v].w);
-#endif
-}
-
-// The normal of vertex v as given (three packed floats).
-vec3 fetchNormal(uint v) {
-    if (texelReads) {
-        int first = int(3u * v);
-        return vec3(texelFetch(normalTexels, first).x, texelFetch(normalTexels, first + 1).x,
-                    texelFetch(normalTexels, first + 2).x);
-    }
-    return vec3(vertexNormals[3u * v], vertexNormals[3u * v + 1u], vertexNormals[3u * v + 2u]);
+// Vertex v's normal as given in xyz, and in w the index of its material in materials[]
+// (the uint's bits): one texel.
+vec4 fetchVertexNormalAndMaterial(uint v) {
+    if (texelReads) return texelFetch(normalTexels, int(v));
+    return vertexNormals[v];
 }
 
 // Material i: two texels.

@@ -22,9 +22,9 @@ rvec3 normalizeOr(rvec3 v, rvec3 fallback) {
     return m > 0.0 ? normalize(v / m) : fallback;
 }
 
-// The material of vertex v (its index rides in the position's w).
-GpuMaterial vertexMaterial(uint v) {
-    return fetchMaterial(fetchVertexMaterialIndex(v));
+// The material of a vertex, from its normal's texel (the index rides in w).
+GpuMaterial vertexMaterial(vec4 normalAndMaterial) {
+    return fetchMaterial(floatBitsToUint(normalAndMaterial.w));
 }
 
 // With --offset error-bound: the hit point as the ray's own point on the triangle's plane,
@@ -80,9 +80,11 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
         s.shininess = m.diffuseShininess.w;
         s.flatPatch = NO_PATCH;
     } else {
-        uvec4 v = fetchTriangle(hit.index);
+        rvec4 cornerA = fetchCorner(hit.index, 0u), cornerB = fetchCorner(hit.index, 1u),
+              cornerC = fetchCorner(hit.index, 2u);
+        uvec3 v = uvec3(cornerWord(cornerB), cornerWord(cornerC), fetchLastVertex(hit.index));
         rvec3 w = hit.barycentric;
-        rvec3 a = fetchPosition(v.x), b = fetchPosition(v.y), c = fetchPosition(v.z);
+        rvec3 a = cornerA.xyz, b = cornerB.xyz, c = cornerC.xyz;
         // The barycentric sum, whose error scales with the vertices only; with --offset
         // error-bound, onTrianglePlane takes o + t d instead where that bound is tighter.
         s.position = w.x * a + w.y * b + w.z * c;
@@ -92,18 +94,20 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
         s.geometricNormal = normalizeOr(faceNormal, -ray.direction);
         s.normalError = dot(abs(s.geometricNormal), GAMMA_7 * s.magnitude);
         if (rayOffsetKind == RAY_OFFSET_ERROR_BOUND) onTrianglePlane(ray, a, e1, e2, faceNormal, s);
-        rvec3 n = w.x * fetchNormal(v.x) + w.y * fetchNormal(v.y) + w.z * fetchNormal(v.z);
+        vec4 va = fetchVertexNormalAndMaterial(v.x), vb = fetchVertexNormalAndMaterial(v.y),
+             vc = fetchVertexNormalAndMaterial(v.z);
+        rvec3 n = w.x * rvec3(va.xyz) + w.y * rvec3(vb.xyz) + w.z * rvec3(vc.xyz);
         s.normal = normalizeOr(n, s.geometricNormal);
-        GpuMaterial ma = vertexMaterial(v.x);
-        GpuMaterial mb = vertexMaterial(v.y);
-        GpuMaterial mc = vertexMaterial(v.z);
+        GpuMaterial ma = vertexMaterial(va);
+        GpuMaterial mb = vertexMaterial(vb);
+        GpuMaterial mc = vertexMaterial(vc);
         vec3 wf = vec3(w); // colours stay float
         vec4 kdShininess =
             wf.x * ma.diffuseShininess + wf.y * mb.diffuseShininess + wf.z * mc.diffuseShininess;
         s.kd = kdShininess.xyz;
         s.shininess = kdShininess.w;
         s.ks = wf.x * ma.specular.xyz + wf.y * mb.specular.xyz + wf.z * mc.specular.xyz;
-        s.flatPatch = v.w;
+        s.flatPatch = cornerWord(cornerA);
     }
     if (dot(s.normal, ray.direction) > 0.0) s.normal = -s.normal;
     return s;

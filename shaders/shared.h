@@ -33,25 +33,32 @@ using uint = std::uint32_t;
 #define BINDING_OUTPUT_IMAGE 0     // rgba8 storage image the kernel writes
 #define BINDING_SPHERES 1          // vec4 per sphere: centre xyz, radius w
 #define BINDING_SPHERE_MATERIALS 2 // uint per sphere: index into materials
-#define BINDING_TRIANGLES 3        // uvec4 per triangle: vertex indices, its flat patch
-#define BINDING_VERTEX_POSITIONS                                                                   \
-    4                            // vec4 per vertex: position xyz, w: its material index (uint bits)
-#define BINDING_VERTEX_NORMALS 5 // 3 floats per vertex: normal xyz as given, tightly packed
-#define BINDING_MATERIALS 6      // GpuMaterial per distinct material
-#define BINDING_LIGHTS 7         // GpuLight per light
-#define BINDING_BVH_NODES 8      // GpuBvhNode per hierarchy node, depth first (host/render/bvh.h)
-#define BINDING_ACCUMULATION 9   // vec4 per pixel, row major: the window's running sum of samples
+// Triangles, in leaf order (host/render/scene_packing.h, gpuTriangleArrays): traversal reads
+// a triangle's three corners and nothing else, three independent fetches; the vertex
+// indices that shading needs (normals, materials) are read for the hit alone.
+// rvec4 per corner, three per triangle: the corner's position xyz, the very floats
+// (doubles in fp64) that the tests compute with; w: corner 0 the triangle's flat patch,
+// corners 1 and 2 the vertex indices of corners 0 and 1 (uint bits in fp32, exact
+// integers in fp64).
+#define BINDING_TRIANGLE_CORNERS 3
+#define BINDING_TRIANGLE_LAST_VERTICES 4 // uint per triangle: the vertex index of its corner 2
+// vec4 per vertex: the normal xyz as given, w the index of its material (uint bits).
+#define BINDING_VERTEX_NORMALS 5
+#define BINDING_MATERIALS 6    // GpuMaterial per distinct material
+#define BINDING_LIGHTS 7       // GpuLight per light
+#define BINDING_BVH_NODES 8    // GpuBvhNode per hierarchy node, depth first (host/render/bvh.h)
+#define BINDING_ACCUMULATION 9 // vec4 per pixel, row major: the window's running sum of samples
 // The arrays read inside loops (traversal, primitives, bounces, lights), again, as uniform
 // texel buffers: views of the same ranges (SPEC_TEXEL_READS picks them over the above).
 // On lavapipe a texel fetch is a gather, where a storage-buffer load inside control flow
 // is a loop over the lanes (docs/performance.md).
 #define BINDING_FIRST_TEXEL_BUFFER 10
-#define BINDING_SPHERE_TEXELS 10   // RGBA32F view of BINDING_SPHERES
-#define BINDING_TRIANGLE_TEXELS 11 // RGBA32UI view of BINDING_TRIANGLES
-#define BINDING_POSITION_TEXELS 12 // RGBA32F view of BINDING_VERTEX_POSITIONS
-#define BINDING_BVH_NODE_TEXELS 13 // RGBA32F view of BINDING_BVH_NODES, 4 texels per node
-#define BINDING_NORMAL_TEXELS 14   // R32F view of BINDING_VERTEX_NORMALS
-#define BINDING_MATERIAL_TEXELS 15 // RGBA32F view of BINDING_MATERIALS, 2 texels per material
+#define BINDING_SPHERE_TEXELS 10      // RGBA32F view of BINDING_SPHERES
+#define BINDING_CORNER_TEXELS 11      // RGBA32F view of BINDING_TRIANGLE_CORNERS (not fp64)
+#define BINDING_LAST_VERTEX_TEXELS 12 // R32UI view of BINDING_TRIANGLE_LAST_VERTICES
+#define BINDING_BVH_NODE_TEXELS 13    // RGBA32F view of BINDING_BVH_NODES, 4 texels per node
+#define BINDING_NORMAL_TEXELS 14      // RGBA32F view of BINDING_VERTEX_NORMALS
+#define BINDING_MATERIAL_TEXELS 15    // RGBA32F view of BINDING_MATERIALS, 2 texels per material
 #define BINDING_SPHERE_MATERIAL_TEXELS 16 // R32UI view of BINDING_SPHERE_MATERIALS
 #define BINDING_LIGHT_TEXELS 17           // RGBA32F view of BINDING_LIGHTS, 2 texels per light
 #define BINDING_TEXEL_BUFFER_END 18       // one past the last texel buffer

@@ -68,20 +68,20 @@ layout(set = 0, binding = BINDING_SPHERES, std430) readonly buffer SphereBuffer 
 layout(set = 0, binding = BINDING_SPHERE_MATERIALS, std430) readonly buffer SphereMaterialBuffer {
     uint sphereMaterials[];
 };
-// Per triangle, its three indices into the vertex arrays in xyz and in w the number of its
-// flat patch, the coplanar triangles it touches (host/render/flat_patches.h, ray_offset.glsl).
-layout(set = 0, binding = BINDING_TRIANGLES, std430) readonly buffer TriangleBuffer {
-    uvec4 triangles[];
+// Per triangle corner, three per triangle in leaf order: its position in xyz, and in w
+// corner 0's flat patch (host/render/flat_patches.h, ray_offset.glsl) or corner 1's and 2's
+// vertex indices, the vertices of corners 0 and 1 (shared.h; read with cornerWord).
+layout(set = 0, binding = BINDING_TRIANGLE_CORNERS, std430) readonly buffer CornerBuffer {
+    rvec4 triangleCorners[];
 };
-// Per vertex, its position in xyz and the index of its material in materials[] in w: the
-// float's bits, or in fp64 a double holding the index (shade.glsl, vertexMaterial).
-layout(set = 0, binding = BINDING_VERTEX_POSITIONS, std430) readonly buffer PositionBuffer {
-    rvec4 vertexPositions[];
+// Per triangle, the vertex index of its corner 2.
+layout(set = 0, binding = BINDING_TRIANGLE_LAST_VERTICES, std430) readonly buffer LastVertexBuffer {
+    uint triangleLastVertices[];
 };
-// Per vertex, its normal as the scene file gives it (maybe unnormalised or zero): three
-// floats, no padding (a vec4 would waste a quarter; see vertexNormal in shade.glsl).
+// Per vertex, its normal as the scene file gives it (maybe unnormalised or zero) in xyz, and
+// the index of its material in materials[] in w (the uint's bits; shade.glsl).
 layout(set = 0, binding = BINDING_VERTEX_NORMALS, std430) readonly buffer NormalBuffer {
-    float vertexNormals[];
+    vec4 vertexNormals[];
 };
 // The distinct materials of the scene.
 layout(set = 0, binding = BINDING_MATERIALS, std430) readonly buffer MaterialBuffer {

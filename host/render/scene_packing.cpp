@@ -229,6 +229,34 @@ void appendBox(std::vector<float>& boxes, glm::dvec3 lo, glm::dvec3 hi) {
 
 } // namespace
 
+GpuTriangleArrays gpuTriangleArrays(const PackedScene& packed) {
+    const bool fp64 = !packed.vertexPositions64.empty();
+    GpuTriangleArrays arrays;
+    if (fp64)
+        arrays.corners64.reserve(3 * packed.triangles.size());
+    else
+        arrays.corners.reserve(3 * packed.triangles.size());
+    arrays.lastVertices.reserve(packed.triangles.size());
+    for (const glm::uvec4& triangle : packed.triangles) {
+        const std::uint32_t words[3] = {triangle.w, triangle.x, triangle.y};
+        for (int k = 0; k < 3; ++k) {
+            if (fp64)
+                arrays.corners64.push_back(glm::dvec4(
+                    glm::dvec3(packed.vertexPositions64[triangle[k]]), double(words[k])));
+            else
+                arrays.corners.push_back(glm::vec4(glm::vec3(packed.vertexPositions[triangle[k]]),
+                                                   std::bit_cast<float>(words[k])));
+        }
+        arrays.lastVertices.push_back(triangle.z);
+    }
+    arrays.normalsAndMaterials.reserve(packed.vertexPositions.size());
+    for (std::size_t v = 0; v < packed.vertexPositions.size(); ++v)
+        arrays.normalsAndMaterials.push_back(
+            glm::vec4(packed.vertexNormals[3 * v], packed.vertexNormals[3 * v + 1],
+                      packed.vertexNormals[3 * v + 2], packed.vertexPositions[v].w));
+    return arrays;
+}
+
 std::uint32_t vertexMaterial(const PackedScene& packed, std::size_t v) {
     return std::bit_cast<std::uint32_t>(packed.vertexPositions.at(v).w);
 }

@@ -27,7 +27,8 @@ struct HierarchyReport {
 // "Acceleration: none, every primitive tested (N primitives)".
 std::string accelerationSummary(const HierarchyReport& report);
 
-// The scene as the GPU sees it, still on the CPU (easy to test).
+// The scene as the GPU sees it, still on the CPU (easy to test); the triangles and vertices
+// are rearranged for the kernel at upload (gpuTriangleArrays).
 struct PackedScene {
     std::vector<glm::vec4> spheres;             // centre xyz, radius w
     std::vector<std::uint32_t> sphereMaterials; // index into materials
@@ -51,6 +52,22 @@ struct PackedScene {
     std::vector<std::uint32_t> sphereOrder;
     std::vector<std::uint32_t> triangleOrder;
 };
+
+// The triangle and vertex arrays in the layout the kernel reads (shaders/shared.h,
+// BINDING_TRIANGLE_CORNERS on): derived from a PackedScene at upload, in its triangle order.
+// Traversal fetches a triangle's three corners, independent of each other, where the
+// vertex indices and then the positions were two dependent fetches; the positions are not
+// uploaded at all, shading reading the hit triangle's corners.
+struct GpuTriangleArrays {
+    // Three per triangle: the corner's position (fp32: the float one; empty in fp64), w the
+    // flat patch (corner 0) or the vertex index of corner 0 (corner 1) and 1 (corner 2), as
+    // the uint's bits.
+    std::vector<glm::vec4> corners;
+    std::vector<glm::dvec4> corners64;          // fp64 only: the same, doubles, w exact
+    std::vector<std::uint32_t> lastVertices;    // per triangle, the vertex index of corner 2
+    std::vector<glm::vec4> normalsAndMaterials; // per vertex: normal xyz, material bits in w
+};
+GpuTriangleArrays gpuTriangleArrays(const PackedScene& packed);
 
 // What the GPU needs: the scene packed in the hierarchy's leaf order, with the hierarchy
 // itself only when it pays (acceleration, useHierarchy). The leaf order is used either

@@ -36,10 +36,10 @@ struct TexelView {
 // formats are ones every Vulkan device supports for uniform texel buffers.
 constexpr TexelView kTexelViews[] = {
     {BINDING_SPHERE_TEXELS, BINDING_SPHERES, VK_FORMAT_R32G32B32A32_SFLOAT, 16, true},
-    {BINDING_TRIANGLE_TEXELS, BINDING_TRIANGLES, VK_FORMAT_R32G32B32A32_UINT, 16, false},
-    {BINDING_POSITION_TEXELS, BINDING_VERTEX_POSITIONS, VK_FORMAT_R32G32B32A32_SFLOAT, 16, true},
+    {BINDING_CORNER_TEXELS, BINDING_TRIANGLE_CORNERS, VK_FORMAT_R32G32B32A32_SFLOAT, 16, true},
+    {BINDING_LAST_VERTEX_TEXELS, BINDING_TRIANGLE_LAST_VERTICES, VK_FORMAT_R32_UINT, 4, false},
     {BINDING_BVH_NODE_TEXELS, BINDING_BVH_NODES, VK_FORMAT_R32G32B32A32_SFLOAT, 16, false},
-    {BINDING_NORMAL_TEXELS, BINDING_VERTEX_NORMALS, VK_FORMAT_R32_SFLOAT, 4, false},
+    {BINDING_NORMAL_TEXELS, BINDING_VERTEX_NORMALS, VK_FORMAT_R32G32B32A32_SFLOAT, 16, false},
     {BINDING_MATERIAL_TEXELS, BINDING_MATERIALS, VK_FORMAT_R32G32B32A32_SFLOAT, 16, false},
     {BINDING_SPHERE_MATERIAL_TEXELS, BINDING_SPHERE_MATERIALS, VK_FORMAT_R32_UINT, 4, false},
     {BINDING_LIGHT_TEXELS, BINDING_LIGHTS, VK_FORMAT_R32G32B32A32_SFLOAT, 16, false},
@@ -55,14 +55,15 @@ VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
 GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wantTexelReads) {
     // fp64: the double arrays take the place of the float ones (shaders/precision.glsl).
     const bool fp64 = !packed.spheres64.empty() || !packed.vertexPositions64.empty();
+    const GpuTriangleArrays triangles = gpuTriangleArrays(packed);
     const ArrayView arrays[] = {
         fp64 ? view(BINDING_SPHERES, "spheres", packed.spheres64)
              : view(BINDING_SPHERES, "spheres", packed.spheres),
         view(BINDING_SPHERE_MATERIALS, "sphere materials", packed.sphereMaterials),
-        view(BINDING_TRIANGLES, "triangles", packed.triangles),
-        fp64 ? view(BINDING_VERTEX_POSITIONS, "vertex positions", packed.vertexPositions64)
-             : view(BINDING_VERTEX_POSITIONS, "vertex positions", packed.vertexPositions),
-        view(BINDING_VERTEX_NORMALS, "vertex normals", packed.vertexNormals),
+        fp64 ? view(BINDING_TRIANGLE_CORNERS, "triangle corners", triangles.corners64)
+             : view(BINDING_TRIANGLE_CORNERS, "triangle corners", triangles.corners),
+        view(BINDING_TRIANGLE_LAST_VERTICES, "triangles' last vertices", triangles.lastVertices),
+        view(BINDING_VERTEX_NORMALS, "vertex normals", triangles.normalsAndMaterials),
         view(BINDING_MATERIALS, "materials", packed.materials),
         view(BINDING_LIGHTS, "lights", packed.lights),
         view(BINDING_BVH_NODES, "hierarchy nodes", packed.bvhNodes),

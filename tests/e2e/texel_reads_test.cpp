@@ -99,6 +99,34 @@ TEST(TexelReads, AnArrayBeyondTheTexelLimitFallsBackWithANote) {
     destroyContext(context);
 }
 
+// The triangles' corners are three texels a triangle: a strip of 40 triangles fits 99 texels
+// as 40 last vertices and 81 shared vertices, not as 120 corners.
+TEST(TexelReads, TriangleCornersBeyondTheTexelLimitFallBackWithANote) {
+    Context context;
+    createInstance(context, {}, true);
+    createDevice(context, "");
+    Scene scene;
+    for (int i = 0; i < 40; ++i) {
+        Triangle triangle{};
+        for (int k = 0; k < 3; ++k)
+            triangle.vertices[k].position = glm::dvec3(i + (k == 1), k == 2, -2);
+        scene.triangles.push_back(triangle);
+    }
+    const PackedScene packed = packSceneInFileOrder(scene);
+    context.properties.limits.maxTexelBufferElements = 99;
+    GpuScene beyond = uploadScene(context, packed);
+    EXPECT_FALSE(beyond.texelReads);
+    EXPECT_EQ(beyond.storageReadsNote,
+              "Storage-buffer reads: the scene's triangle corners take 120 texels, more than "
+              "this device's maxTexelBufferElements of 99");
+    destroyGpuScene(context, beyond);
+    context.properties.limits.maxTexelBufferElements = 120;
+    GpuScene fits = uploadScene(context, packed);
+    EXPECT_TRUE(fits.texelReads) << fits.storageReadsNote;
+    destroyGpuScene(context, fits);
+    destroyContext(context);
+}
+
 TEST(TexelReads, StorageReadsIsNotInTheUsageText) {
     EXPECT_EQ(runRaytracer({"--help"}).out.find("--storage-reads"), std::string::npos);
 }

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <map>
 
 namespace {
@@ -101,6 +102,48 @@ TEST(ScenePacking, SharesIdenticalMaterialsAndVertices) {
     EXPECT_EQ(packed.spheres[1], glm::vec4(2, 0, -3, 0.5f));
     EXPECT_EQ(packed.materials[0].diffuseShininess, glm::vec4(0.9f, 0.2f, 0.3f, 10.0f));
     EXPECT_EQ(packed.lights.size(), 1u);
+}
+
+// The kernel's triangle arrays (shared.h): each triangle's corners with the very floats of
+// its vertices, the flat patch and two vertex indices in the corners' w, the third vertex
+// index apart, and per vertex its normal with its material's index.
+TEST(ScenePacking, TrianglesGoToTheKernelAsCornersWithTheirVertexIndices) {
+    Scene scene;
+    Material red = material(0.9), blue = material(0.1);
+    Vertex a = vertex({0, 0, -5}, blue), b = vertex({1, 0, -5}, blue), c = vertex({0, 1, -5}, blue),
+           d = vertex({1, 1, -5}, red), e = vertex({5, 0.1, -4}, red);
+    d.normal = glm::dvec3(0, 0.6, 0.8);
+    scene.triangles.push_back({{a, b, c}});
+    scene.triangles.push_back({{b, d, c}});
+    scene.triangles.push_back({{e, b, d}}); // not in the square's plane: its own patch
+    PackedScene packed = packSceneInFileOrder(scene);
+    ASSERT_EQ(packed.triangles.size(), 3u);
+    const GpuTriangleArrays arrays = gpuTriangleArrays(packed);
+    ASSERT_EQ(arrays.corners.size(), 9u);
+    EXPECT_TRUE(arrays.corners64.empty());
+    for (std::size_t t = 0; t < 3; ++t) {
+        const glm::uvec4 triangle = packed.triangles[t];
+        for (int k = 0; k < 3; ++k)
+            EXPECT_EQ(glm::vec3(arrays.corners[3 * t + k]),
+                      glm::vec3(packed.vertexPositions[triangle[k]]));
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(arrays.corners[3 * t].w), triangle.w);
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(arrays.corners[3 * t + 1].w), triangle.x);
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(arrays.corners[3 * t + 2].w), triangle.y);
+    }
+    EXPECT_EQ(arrays.lastVertices, (std::vector<std::uint32_t>{2, 2, 3}));
+    EXPECT_NE(packed.triangles[2].w, packed.triangles[0].w);
+    ASSERT_EQ(arrays.normalsAndMaterials.size(), packed.vertexPositions.size());
+    EXPECT_EQ(glm::vec3(arrays.normalsAndMaterials[3]), glm::vec3(0, 0.6f, 0.8f));
+    for (std::size_t v = 0; v < packed.vertexPositions.size(); ++v)
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(arrays.normalsAndMaterials[v].w),
+                  vertexMaterial(packed, v));
+
+    // fp64: the corners in double, the words as exact integers.
+    const GpuTriangleArrays exact = gpuTriangleArrays(packSceneInFileOrder(scene, Precision::Fp64));
+    EXPECT_TRUE(exact.corners.empty());
+    ASSERT_EQ(exact.corners64.size(), 9u);
+    EXPECT_EQ(exact.corners64[7], glm::dvec4(1, 0, -5, 4)); // triangle 2's corner 1, b; e is 4
+    EXPECT_EQ(exact.corners64[8], glm::dvec4(1, 1, -5, 1)); // its corner 2, d; b is vertex 1
 }
 
 TEST(ScenePacking, VerticesDifferingOnlyInMaterialStaySeparate) {
