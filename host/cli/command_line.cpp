@@ -55,6 +55,7 @@ std::string commandLine(const Options& options) {
     // What changes pixels first, in the order the window's screenshot line has always had.
     if (!options.scenePath.empty()) command += " " + shellQuoted(options.scenePath.string());
     addPath("-o", options.outputPath);
+    addCount("--quality", options.jpegQuality, defaults.jpegQuality);
     add("--width", std::to_string(options.width));
     add("--height", std::to_string(options.height));
     if (options.samplesGiven || options.samplesPerPixel != defaults.samplesPerPixel)
@@ -97,6 +98,7 @@ std::string commandLine(const Options& options) {
     addSwitch("--validate", options.validate);
     addSwitch("--no-cache", !options.useCache);
     addSwitch("--progress", options.progress);
+    addSwitch("--quiet", options.quiet);
     addSwitch("--window", options.forceWindow);
     addSwitch("--redraw-continuously", options.redrawContinuously);
     addSwitch("--general-kernel", options.generalKernel);
@@ -104,6 +106,7 @@ std::string commandLine(const Options& options) {
     addSwitch("--help", options.showHelp);
     addSwitch("--version", options.showVersion);
     addSwitch("--check", options.checkOnly);
+    addSwitch("--list-devices", options.listDevices);
     return command;
 }
 
