@@ -16,6 +16,7 @@
 #include "render/pixel_story.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_summary.h"
+#include "scene/scene_writer.h"
 #include "scene/warning_summary.h"
 #include "window/window.h"
 
@@ -131,12 +132,20 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
         if (options.scenePath.empty()) return kSuccess;
     }
     const auto parseStart = std::chrono::steady_clock::now();
-    Scene scene = loadScene(options.scenePath);
+    Scene scene = loadScene(options.scenePath, objSceneSetup(options));
     startup.parseMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - parseStart)
             .count();
     for (const std::string& line : summarisedWarnings(scene.warnings))
         note("%s\n", line.c_str());
+    if (!options.saveScenePath.empty()) {
+        writeSceneFile(options.saveScenePath, scene);
+        note("Wrote %s\n", options.saveScenePath.string().c_str());
+        const bool nothingElse = options.outputPath.empty() && options.benchFrames == 0 &&
+                                 !options.pixelGiven && !options.forceWindow &&
+                                 options.benchWindowFrames == 0 && !options.checkOnly;
+        if (nothingElse) return kSuccess;
+    }
     if (options.checkOnly) { // the scene parsed: it is valid; no Vulkan from here either
         std::cout << options.scenePath.string() << ": valid\n" << sceneSummary(scene);
         return kSuccess;

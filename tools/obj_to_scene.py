@@ -7,18 +7,25 @@ Reads v, vn, f and usemtl/mtllib statements. Faces may be triangles or convex
 polygons (fan-triangulated from their first corner), with corners written as
 v, v/vt, v/vt/vn or v//vn, and with positive or negative (relative) indices.
 A corner without a normal gets a smooth one: the area-weighted average of the
-normals of the faces that share its position. Texture coordinates are read and
-ignored. `v x y z r g b` vertex colours become the corner's diffuse colour.
+normals of the faces around its position that meet its own face within
+--crease degrees (default 60; 0 gives flat faces). Texture coordinates are read
+and ignored. `v x y z r g b` vertex colours become the corner's diffuse colour.
+--up turns the model's up axis onto +y.
 
 Materials (from the MTL files that mtllib names, looked up beside the OBJ):
 Kd becomes dif, Ks spe (the renderer also uses it as the mirror weight) and Ns
 shi; colours are clamped to [0, 1] and Ns to [0, 1000]. Faces without a known
 material get a light grey default.
 
-The scene's camera sits at the origin looking down -z. --fit moves and scales
-the model (uniformly) to sit centred at z = -3 with its largest side 1.5 long,
-so any model shows up in view. One white light sits above the camera unless
---light is given (it may be repeated).
+The scene's camera sits at the origin looking down -z. --fit scales the model
+(uniformly) to 1.5 units across and puts it straight ahead, as far away as
+makes it fill 80% of the view. --ground adds a matte floor under it; --rig
+places key, fill and rim lights around it; otherwise one white light sits above
+the camera unless --light is given (it may be repeated).
+
+Raytracer reads OBJ files itself by the same rules (`Raytracer model.obj`, and
+`--save-scene` writes the scene it built: by default the same text as this
+tool's with --fit --ground --rig; docs/models.md).
 
 Triangles that are degenerate (two corners with one position, or no area)
 are left out and counted on stderr. A malformed line is an error that names
@@ -34,8 +41,6 @@ import sys
 FMT = "%.9g"
 
 DEFAULT_MATERIAL = {"dif": (0.75, 0.75, 0.75), "spe": (0.1, 0.1, 0.1), "shi": 30.0}
-FIT_CENTRE = (0.0, 0.0, -3.0)
-FIT_SIZE = 1.5
 MAX_SHININESS = 1000.0
 
 
@@ -76,7 +81,7 @@ def clamp(x, low, high):
 def logical_lines(path):
     """(line number, text) of each statement; a trailing backslash continues a line."""
     try:
-        with open(path, "r", encoding="utf-8", errors="replace") as handle:
+        with open(path, "r", encoding="utf-8-sig", errors="replace") as handle:
             pending, start = "", 0
             for number, raw in enumerate(handle, 1):
                 text = raw.rstrip("\r\n")
@@ -91,6 +96,30 @@ def logical_lines(path):
                 yield start, pending
     except OSError as error:
         raise ConversionError(path, 0, "cannot read: %s" % error.strerror)
+
+
+WHITESPACE_BYTES = b" \t\n\v\f\r"
+
+
+def binary_reason(path):
+    """Why the file is not text at all (as Raytracer says it), or None: the first NUL,
+    control byte other than whitespace, or byte that is not UTF-8."""
+    try:
+        with open(path, "rb") as handle:
+            data = handle.read()
+    except OSError:
+        return None  # logical_lines reports it
+    bad_utf8 = None
+    try:
+        data.decode("utf-8")
+    except UnicodeDecodeError as error:
+        bad_utf8 = error.start
+    for offset, byte in enumerate(data[:bad_utf8]):
+        if byte == 0:
+            return "NUL byte at offset %d" % offset
+        if (byte < 0x20 and byte not in WHITESPACE_BYTES) or byte == 0x7F:
+            return "control byte 0x%02x at offset %d" % (byte, offset)
+    return None if bad_utf8 is None else "invalid UTF-8 at offset %d" % bad_utf8
 
 
 def numbers(path, line, fields, count, what, optional=0):
@@ -140,7 +169,7 @@ def read_mtl(path, warn):
             current["shi"] = clamp(numbers(path, line, args, 1, "Ns")[0], 0.0, MAX_SHININESS)
         # Ka, Ke, d, Tr, illum, Ni, maps: nothing in this renderer's model uses them.
     if not materials:
-        warn("%s: no materials (newmtl) found" % path)
+        warn("%s: warning: no materials (newmtl) found" % path)
     return materials
 
 
@@ -181,6 +210,9 @@ def parse_corner(path, line, token, model):
 
 
 def read_obj(path, warn):
+    reason = binary_reason(path)
+    if reason:
+        raise ConversionError(path, 0, "not an OBJ file: it is binary (%s)" % reason)
     model = Model()
     materials, material = {}, DEFAULT_MATERIAL
     ignored = set()
@@ -202,7 +234,8 @@ def read_obj(path, warn):
             corners = [parse_corner(path, line, token, model) for token in args]
             model.faces.append([p for p, _n in corners])
             for i in range(1, len(corners) - 1):  # a fan from the first corner
-                model.triangles.append(((corners[0], corners[i], corners[i + 1]), material, line))
+                model.triangles.append(((corners[0], corners[i], corners[i + 1]), material, line,
+                                        len(model.faces) - 1))
         elif keyword == "mtllib":
             for name in args:
                 mtl = os.path.join(os.path.dirname(path), name)
@@ -226,39 +259,118 @@ def read_obj(path, warn):
     return model
 
 
-# ------------------------------------------------------------ normals, fit ---
+# ------------------------------------------- up axis, normals, fit, ground ---
+# The same rules as Raytracer's own OBJ reader (docs/models.md), operation for operation
+# and in the same order, so that both write the same scene text.
+
+FIT_SIZE = 1.5
+FRAME_SHARE = 0.8
+GROUND_SPAN = 100.0
+GROUND_MATERIAL = {"dif": (0.7, 0.7, 0.7), "spe": (0.0, 0.0, 0.0), "shi": 1.0}
+UP_AXES = ("x", "-x", "y", "-y", "z", "-z")
 
 
-def smooth_normals(model):
-    """Per position, the average of the normals of the faces around it, weighted by
-    their area.
-
-    Newell's sum of cross products over a polygon is its normal scaled by twice its
-    area, so adding the unnormalised sums weights by area. It is taken per polygon,
-    not per triangle, so how a quad was split does not tilt its corners' normals."""
-    sums = [[0.0, 0.0, 0.0] for _ in model.positions]
-    for face in model.faces:
-        n = [0.0, 0.0, 0.0]
-        for i in range(1, len(face) - 1):
-            a, b, c = model.positions[face[0]], model.positions[face[i]], model.positions[face[i + 1]]
-            e = cross(sub(b, a), sub(c, a))
-            n = [n[0] + e[0], n[1] + e[1], n[2] + e[2]]
-        for p in set(face):
-            s = sums[p]
-            s[0] += n[0]
-            s[1] += n[1]
-            s[2] += n[2]
-    return [normalize(s) for s in sums]
+def turn_up(v, up):
+    """The up axis turned onto +y: swaps and negations only, so nothing is rounded."""
+    x, y, z = v
+    return {"x": (-y, x, z), "-x": (y, -x, z), "y": (x, y, z), "-y": (x, -y, -z),
+            "z": (x, z, -y), "-z": (x, -z, y)}[up]
 
 
-def fit_transform(positions):
-    """(centre, scale) that moves the bounding box's centre to FIT_CENTRE and its
-    largest side to FIT_SIZE."""
-    low = [min(p[i] for p in positions) for i in range(3)]
-    high = [max(p[i] for p in positions) for i in range(3)]
-    centre = [(low[i] + high[i]) / 2.0 for i in range(3)]
-    size = max(high[i] - low[i] for i in range(3))
-    return centre, (FIT_SIZE / size if size > 0.0 else 1.0)
+def add(a, b):
+    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+
+
+def dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def newell_normal(positions, face):
+    """Newell's sum of cross products over a polygon: its normal scaled by twice its area,
+    so adding such sums weights faces by area; per polygon, so how a quad was split does
+    not tilt its corners' normals."""
+    n = (0.0, 0.0, 0.0)
+    for i in range(1, len(face) - 1):
+        a = positions[face[0]]
+        n = add(n, cross(sub(positions[face[i]], a), sub(positions[face[i + 1]], a)))
+    return n
+
+
+class SmoothNormals:
+    """For face f and its position p: the normalised sum of the Newell normals of the
+    faces around p (each face once, in file order) whose unit normal is within the crease
+    angle of f's, f itself always included."""
+
+    def __init__(self, model, positions, crease):
+        self.cosine = math.cos(crease * (math.pi / 180.0))
+        self.everywhere = crease >= 180.0
+        self.newell = [newell_normal(positions, face) for face in model.faces]
+        self.unit = [normalize(n) for n in self.newell]
+        self.around = [[] for _ in positions]
+        for f, face in enumerate(model.faces):
+            for p in face:
+                if f not in self.around[p]:
+                    self.around[p].append(f)
+
+    def at(self, face, position):
+        total = (0.0, 0.0, 0.0)
+        for other in self.around[position]:
+            if self.everywhere or other == face or dot(self.unit[face], self.unit[other]) >= self.cosine:
+                total = add(total, self.newell[other])
+        return normalize(total)
+
+
+class Placement:
+    """p -> (p - centre) * scale + offset: the model scaled to FIT_SIZE across and put
+    straight ahead of the default camera, as far away as makes its outermost position lie
+    FRAME_SHARE of the way from the centre of the view to its edge (without fit, p)."""
+
+    def __init__(self, positions, fit, fov, aspect):
+        low = [min(p[i] for p in positions) for i in range(3)]
+        high = [max(p[i] for p in positions) for i in range(3)]
+        self.centre, self.scale, self.offset = (0.0, 0.0, 0.0), 1.0, (0.0, 0.0, 0.0)
+        if fit:
+            self.centre = tuple((low[i] + high[i]) / 2.0 for i in range(3))
+            size = max(high[i] - low[i] for i in range(3))
+            self.scale = FIT_SIZE / size if size > 0.0 else 1.0
+            tangent = math.tan(fov * (math.pi / 180.0) / 2.0)
+            vertical = FRAME_SHARE * tangent
+            horizontal = vertical * aspect
+            distance = 0.0
+            for p in positions:
+                v = tuple((p[i] - self.centre[i]) * self.scale for i in range(3))
+                distance = max(distance, v[2] + max(abs(v[1]) / vertical, abs(v[0]) / horizontal))
+            self.offset = (0.0, 0.0, -distance)
+        self.low, self.high = self.place(low), self.place(high)
+
+    def place(self, p):
+        return tuple((p[i] - self.centre[i]) * self.scale + self.offset[i] for i in range(3))
+
+
+def light_rig(placement):
+    """Key (front left, high), fill (front right, low, dim) and rim (behind, high) lights,
+    at distances in units of the model's radius from its centre, relative to the default
+    camera's right, up and backward axes."""
+    centre = tuple((placement.low[i] + placement.high[i]) / 2.0 for i in range(3))
+    radius = length(sub(placement.high, placement.low)) / 2.0
+    right, up, back = (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)
+    lights = []
+    for r, u, b, brightness in ((-2.0, 2.5, 2.5, 0.8), (2.5, 0.5, 2.0, 0.3), (0.5, 3.0, -3.0, 0.5)):
+        offset = tuple(right[i] * (radius * r) + up[i] * (radius * u) + back[i] * (radius * b) for i in range(3))
+        lights.append((add(centre, offset), (brightness, brightness, brightness)))
+    return lights
+
+
+def ground(placement):
+    """A floor under the model: a square GROUND_SPAN model sizes across, centred below
+    it, at the height of its lowest position, matte grey, facing up."""
+    low, high = placement.low, placement.high
+    centre = tuple((low[i] + high[i]) / 2.0 for i in range(3))
+    half = GROUND_SPAN * max(high[i] - low[i] for i in range(3)) / 2.0
+    y = low[1]
+    corners = [(centre[0] - half, y, centre[2] - half), (centre[0] + half, y, centre[2] - half),
+               (centre[0] + half, y, centre[2] + half), (centre[0] - half, y, centre[2] + half)]
+    return [[corners[k] for k in triangle] for triangle in ((0, 3, 2), (0, 2, 1))]
 
 
 # ------------------------------------------------------------------ writing ---
@@ -273,36 +385,37 @@ def vec(v):
     return "%s %s %s" % (fmt(v[0]), fmt(v[1]), fmt(v[2]))
 
 
-def write_scene(out, model, lights, ambient, fit):
-    smooth = None
-    if any(n is None for corners, _m, _l in model.triangles for _p, n in corners):
-        smooth = smooth_normals(model)
-    place = lambda p: p
-    if fit:
-        centre, scale = fit_transform(model.positions)
-        place = lambda p: tuple((p[i] - centre[i]) * scale + FIT_CENTRE[i] for i in range(3))
+def write_scene(out, model, settings):
+    """settings: up, crease, fit, fov, aspect, ground, rig, lights, ambient."""
+    positions = [turn_up(p, settings.up) for p in model.positions]
+    normals = [turn_up(n, settings.up) for n in model.normals]
+    placement = Placement(positions, settings.fit, settings.fov, settings.aspect)
+    smooth = SmoothNormals(model, positions, settings.crease)
+    lights = light_rig(placement) if settings.rig else settings.lights
 
     triangles = []
-    for corners, material, _line in model.triangles:
-        positions = [model.positions[p] for p, _n in corners]
-        if len({p for p, _n in corners}) < 3 or length(cross(sub(positions[1], positions[0]),
-                                                             sub(positions[2], positions[0]))) == 0.0:
+    for corners, material, _line, face in model.triangles:
+        corner_positions = [positions[p] for p, _n in corners]
+        if len({p for p, _n in corners}) < 3 or length(cross(sub(corner_positions[1], corner_positions[0]),
+                                                             sub(corner_positions[2], corner_positions[0]))) == 0.0:
             model.skipped += 1
             continue
-        triangles.append((corners, material))
+        triangles.append([(placement.place(positions[p]), normals[n] if n is not None else smooth.at(face, p),
+                           model.colors[p] if model.colors[p] is not None else material["dif"], material)
+                          for p, n in corners])
+    if settings.ground:
+        triangles += [[(corner, (0.0, 1.0, 0.0), GROUND_MATERIAL["dif"], GROUND_MATERIAL) for corner in triangle]
+                      for triangle in ground(placement)]
 
     out.write("%d\n" % (len(lights) + len(triangles)))
-    out.write("amb: %s\n" % vec(ambient))
+    out.write("amb: %s\n" % vec(settings.ambient))
     for position, color in lights:
         out.write("light\npos: %s\ncol: %s\n" % (vec(position), vec(color)))
-    for corners, material in triangles:
+    for triangle in triangles:
         out.write("triangle\n")
-        for p, n in corners:
-            normal = model.normals[n] if n is not None else smooth[p]
-            dif = model.colors[p] if model.colors[p] is not None else material["dif"]
+        for position, normal, dif, material in triangle:
             out.write("pos: %s\nnor: %s\ndif: %s\nspe: %s\nshi: %s\n" % (
-                vec(place(model.positions[p])), vec(normal), vec(dif), vec(material["spe"]),
-                fmt(material["shi"])))
+                vec(position), vec(normal), vec(dif), vec(material["spe"]), fmt(material["shi"])))
     return len(triangles)
 
 
@@ -329,6 +442,16 @@ def parse_color(text):
     return values
 
 
+def crease_angle(text):
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError("expected degrees from 0 to 180, got '%s'" % text)
+    if not 0.0 <= value <= 180.0:
+        raise argparse.ArgumentTypeError("expected degrees from 0 to 180, got '%s'" % text)
+    return value
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description="Convert a Wavefront OBJ model to a Raytracer scene.")
     parser.add_argument("obj", help="the .obj file")
@@ -340,27 +463,44 @@ def main(argv=None):
     parser.add_argument("--ambient", type=parse_color, default=(0.1, 0.1, 0.1), metavar="R,G,B",
                         help="the ambient colour (default 0.1,0.1,0.1)")
     parser.add_argument("--fit", action="store_true",
-                        help="move and scale the model to sit centred at z = -3, %g units across" % FIT_SIZE)
+                        help="scale the model to %g units across and put it straight ahead of the camera, "
+                             "filling %d%%%% of the view (of --fov, --width and --height)" % (FIT_SIZE, FRAME_SHARE * 100))
+    parser.add_argument("--up", choices=UP_AXES, default="y",
+                        help="the model's axis that is up, turned onto +y (default y)")
+    parser.add_argument("--crease", type=crease_angle, default=60.0, metavar="DEG",
+                        help="a corner without a normal averages the faces around it within DEG degrees of "
+                             "its own (0: flat, 180: smooth everywhere; default 60)")
+    parser.add_argument("--ground", action="store_true", help="a matte floor under the model, for its shadow")
+    parser.add_argument("--rig", action="store_true",
+                        help="key, fill and rim lights around the model instead of --light's")
+    parser.add_argument("--fov", type=float, default=60.0, help="the view --fit fills: vertical degrees (default 60)")
+    parser.add_argument("--width", type=int, default=640, help="the view --fit fills: width (default 640)")
+    parser.add_argument("--height", type=int, default=480, help="the view --fit fills: height (default 480)")
     # "--light -1,5,0" would read as an unknown option "-1,5,0" to argparse: glue
     # each triple to its option ("--light=-1,5,0") first.
     argv = list(sys.argv[1:] if argv is None else argv)
     glued = []
     while argv:
         arg = argv.pop(0)
-        glued.append(arg + "=" + argv.pop(0) if arg in ("--light", "--light-color", "--light-colour", "--ambient") and argv else arg)
+        glued.append(arg + "=" + argv.pop(0) if arg in ("--light", "--light-color", "--light-colour", "--ambient", "--up") and argv else arg)
     args = parser.parse_args(glued)
+    if args.rig and args.light:
+        parser.error("--rig places its own lights: give --rig or --light, not both")
+    if not (0.0 < args.fov < 180.0) or args.width < 1 or args.height < 1:
+        parser.error("--fov must lie strictly between 0 and 180, --width and --height be at least 1")
 
     warn = lambda message: print(message, file=sys.stderr)
     try:
         model = read_obj(args.obj, warn)
-        lights = [(p, args.light_color) for p in (args.light or [(0.0, 4.0, 0.0)])]
+        args.lights = [(p, args.light_color) for p in (args.light or [(0.0, 4.0, 0.0)])]
+        args.aspect = args.width / args.height
         if args.out:
             temporary = args.out + ".tmp"
             with open(temporary, "w", encoding="ascii", newline="\n") as out:
-                count = write_scene(out, model, lights, args.ambient, args.fit)
+                count = write_scene(out, model, args)
             os.replace(temporary, args.out)  # never a half-written scene
         else:
-            count = write_scene(sys.stdout, model, lights, args.ambient, args.fit)
+            count = write_scene(sys.stdout, model, args)
     except ConversionError as error:
         print(error, file=sys.stderr)
         return 1

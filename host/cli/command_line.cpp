@@ -79,6 +79,10 @@ std::string commandLine(const Options& options) {
     addChoice("--triangle-test", triangleTestNames(), kernel.triangleTest, plain.triangleTest);
     addChoice("--offset", rayOffsetNames(), kernel.offset, plain.offset);
     addPath("--shader-dir", options.shaderDirectory);
+    addChoice("--up", upAxisNames(), options.modelUp, defaults.modelUp);
+    if (options.creaseDegrees != defaults.creaseDegrees)
+        add("--crease", exact(options.creaseDegrees));
+    addSwitch("--no-ground", !options.ground);
 
     // Then how the program runs, which leaves the image as it is.
     addChoice("--accel", accelerationNames(), options.acceleration, defaults.acceleration);
@@ -90,6 +94,7 @@ std::string commandLine(const Options& options) {
     if (options.pixelGiven)
         add("--pixel", std::to_string(options.pixel.x) + "," + std::to_string(options.pixel.y));
     addPath("--dump-shaders", options.dumpShadersTo);
+    addPath("--save-scene", options.saveScenePath);
     addSwitch("--validate", options.validate);
     addSwitch("--no-cache", !options.useCache);
     addSwitch("--progress", options.progress);
@@ -121,5 +126,8 @@ std::string headlessCommand(const Options& options, const CameraPose& camera, in
     view.background = options.background;
     view.kernel = options.kernel;
     view.shaderDirectory = options.shaderDirectory;
+    view.modelUp = options.modelUp; // an OBJ model is built by these
+    view.creaseDegrees = options.creaseDegrees;
+    view.ground = options.ground;
     return commandLine(view);
 }

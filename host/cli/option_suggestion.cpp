@@ -58,7 +58,10 @@ std::string closeOptions(const std::string& typed, const std::vector<std::string
         if (distance <= 2 && distance == best) nearest.push_back(candidate);
         if (candidate.compare(0, typed.size(), typed) == 0) extending.push_back(candidate);
     }
-    std::vector<std::string>& chosen = nearest.empty() ? extending : nearest;
+    // One edit away is a typo; otherwise an option that begins with what was typed is the
+    // likelier meaning ("--dump" is --dump-shaders cut short, not --up two edits away).
+    const bool typo = !nearest.empty() && best <= 1;
+    std::vector<std::string>& chosen = typo || extending.empty() ? nearest : extending;
     if (chosen.size() > 3) chosen.resize(3);
     return joined(chosen);
 }

@@ -8,7 +8,7 @@
 // Every long option --help names ("--width", "--offset", ...), each once, in its order.
 std::vector<std::string> documentedOptions(const std::string& helpText);
 
-// The candidates closest to typed: those within an edit distance of 2 (the closest
-// ones), else those that typed begins; at most three, joined as "--a, --b or --c".
+// The candidates closest to typed: those one edit away, else those that typed begins, else
+// those two edits away; at most three, joined as "--a, --b or --c".
 // Empty when none is close or typed is too short ("--" or "--x") to mean anything.
 std::string closeOptions(const std::string& typed, const std::vector<std::string>& candidates);

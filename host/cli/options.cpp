@@ -113,6 +113,23 @@ bool parseKernelOption(const std::string& arg, const std::function<const std::st
 
 } // namespace
 
+const ChoiceNames<UpAxis>& upAxisNames() {
+    static const ChoiceNames<UpAxis> names = {{"y", UpAxis::PosY}, {"-y", UpAxis::NegY},
+                                              {"z", UpAxis::PosZ}, {"-z", UpAxis::NegZ},
+                                              {"x", UpAxis::PosX}, {"-x", UpAxis::NegX}};
+    return names;
+}
+
+ObjSceneSetup objSceneSetup(const Options& options) {
+    ObjSceneSetup setup;
+    setup.up = options.modelUp;
+    setup.creaseDegrees = options.creaseDegrees;
+    setup.ground = options.ground;
+    setup.fovDegrees = options.fovDegrees;
+    setup.aspect = double(options.width) / double(options.height);
+    return setup;
+}
+
 const ChoiceNames<Acceleration>& accelerationNames() {
     static const ChoiceNames<Acceleration> names = {
         {"auto", Acceleration::Auto}, {"bvh", Acceleration::Bvh}, {"none", Acceleration::None}};
@@ -122,7 +139,8 @@ const ChoiceNames<Acceleration>& accelerationNames() {
 std::string usageText() {
     return "Usage: Raytracer SCENE [options]\n"
            "Renders SCENE in a window (headless to a PNG when there is no display: STEM.png,\n"
-           "or STEM-1.png, STEM-2.png, ... beside an earlier one, which is kept).\n"
+           "or STEM-1.png, STEM-2.png, ... beside an earlier one, which is kept). SCENE is a\n"
+           "scene file, or a Wavefront OBJ model (.obj, with its MTL materials).\n"
            "\n"
            "  -o, --output FILE     render headless and write FILE: .png, .jpg/.jpeg or .ppm\n"
            "                        (8-bit), or .pfm or .exr (float: each pixel before the\n"
@@ -175,6 +193,14 @@ std::string usageText() {
            "                        includes); the window recompiles when one is saved\n"
            "  --dump-shaders DIR    write the built-in shader sources to DIR and exit\n"
            "  --bench-window N      window: time N progressive frames, print frames per second\n"
+           "  --up y|-y|z|-z|x|-x  an OBJ model's axis that is up (default y)\n"
+           "  --crease DEG          an OBJ model's corners without normals average the faces\n"
+           "                        around them within DEG degrees of their own (0: flat, 180:\n"
+           "                        smooth everywhere; default 60)\n"
+           "  --no-ground           no floor under an OBJ model\n"
+           "  --save-scene FILE     write the scene as read (an OBJ model as built: fitted,\n"
+           "                        lit, with its normals) in the scene format; alone, nothing\n"
+           "                        else is done\n"
            "  --check               parse and validate SCENE without Vulkan: print its counts,\n"
            "                        bounds and warnings; exit 0 if valid, 3 if not\n"
            "  --version             print the version, and those of the Vulkan headers and\n"
@@ -223,6 +249,18 @@ Options parseOptions(int argc, const char* const* argv) {
         } else if (arg == "--quality") {
             options.jpegQuality = parseCount(arg, value(), 1, 100);
             qualityGiven = true;
+        } else if (arg == "--save-scene") {
+            options.saveScenePath = value();
+            if (options.saveScenePath.empty()) throw UsageError(arg + " expects a file name");
+        } else if (arg == "--up") {
+            options.modelUp = parseChoice(arg, value(), upAxisNames());
+        } else if (arg == "--crease") {
+            const std::string& degrees = value();
+            options.creaseDegrees = parseReal(arg, degrees);
+            if (!(options.creaseDegrees >= 0.0 && options.creaseDegrees <= 180.0))
+                throw UsageError("--crease expects degrees from 0 to 180, got '" + degrees + "'");
+        } else if (arg == "--no-ground") {
+            options.ground = false;
         } else if (arg == "--width") {
             options.width = parseCount(arg, value(), 1, 16384);
         } else if (arg == "--height") {

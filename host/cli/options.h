@@ -6,6 +6,7 @@
 #include "render/bvh.h"
 #include "render/kernel_choices.h"
 #include "scene/camera.h"
+#include "scene/obj_scene.h"
 
 #include <glm/glm.hpp>
 
@@ -34,6 +35,12 @@ struct Options {
     bool showVersion = false; // --version: the program's, Vulkan's headers' and glslang's
     bool listDevices = false; // --list-devices: print every Vulkan device and exit
     bool quiet = false;       // --quiet: no progress, notes or warnings on stderr; errors only
+    // --save-scene FILE: the scene as read (an OBJ model's as built)
+    std::filesystem::path saveScenePath;
+    // What an OBJ model is given (docs/models.md): --up AXIS, --crease DEG, --no-ground.
+    UpAxis modelUp = UpAxis::PosY;
+    double creaseDegrees = 60.0;
+    bool ground = true;
     bool checkOnly = false; // --check: parse and validate the scene, print what it holds; no Vulkan
     bool useCache = true;   // --no-cache: no shader or pipeline cache on disk
     std::uint32_t regionSide =
@@ -62,6 +69,12 @@ struct Options {
 
 // --accel's names, in the order --help lists them.
 const ChoiceNames<Acceleration>& accelerationNames();
+// --up's names: y, -y, z, -z, x, -x.
+const ChoiceNames<UpAxis>& upAxisNames();
+
+// How loadScene makes an OBJ model a scene for these options: theirs, and the view's field
+// of view and aspect ratio for the framing.
+ObjSceneSetup objSceneSetup(const Options& options);
 
 // A command line that does not make sense; what() is the message for the user.
 struct UsageError : std::runtime_error {

@@ -18,19 +18,29 @@ struct WindowKey {
     std::string_view detail; // more, for the docs' table only; may be empty
 };
 
-inline constexpr std::array<WindowKey, 11> kWindowKeys = {{
+inline constexpr std::array<WindowKey, 13> kWindowKeys = {{
     {"Esc or Q", "quits", ""},
     {"R", "reloads the scene file and the shaders", ""},
-    {"P", "writes a screenshot PNG once refinement is done",
-     "(`SCENE-screenshot-N.png` in the current folder, so it is the headless image at the same "
-     "settings) and prints its path and the headless command that renders it"},
+    {"P", "writes a screenshot PNG of what is shown now",
+     "(`SCENE-screenshot-N-Sspp.png` in the current folder, S its samples per pixel so far) and "
+     "prints its path and the headless command that renders the same image (with the r2 "
+     "sampler, whose samples do not depend on their count, or once refinement is done)"},
+    {"Shift+P", "writes a screenshot PNG once refinement of the current view is done",
+     "(so it is the headless `--spp N` image at the same settings); a camera move meanwhile "
+     "makes it wait for the new view and says so; closing the window first says it was dropped "
+     "and prints the headless command"},
     {"V", "toggles vsync", "(FIFO against MAILBOX, else IMMEDIATE)"},
     {"C or Home", "resets the camera", "to the default one"},
+    {"O", "prints the current camera as options",
+     "on stderr: `--camera-pos`, `--camera-target`, `--camera-up` and `--fov`, exact, to paste "
+     "into a headless command"},
     {"left drag", "orbits", "around the scene"},
     {"wheel", "dollies", "towards or away from the orbit centre"},
     {"right drag", "looks around", "(turns the camera in place)"},
-    {"W/A/S/D", "fly forward, left, back and right", "while held, across the scene in about 4 s"},
-    {"Space/Left Shift", "fly up and down", "while held"},
+    {"W/A/S/D or Up/Left/Down/Right", "fly forward, left, back and right",
+     "while held, across the scene in about 4 s"},
+    {"Space/Left Control", "fly up and down",
+     "while held (Control, not Shift, so that Shift+P leaves the camera where it is)"},
     {"I", "prints the story of the pixel under the mouse",
      "on stdout: its ray tree as the kernel traced it, as JSON, at the window's sample target, "
      "as `--pixel X,Y` prints it headless (docs/pixel_story.md)"},

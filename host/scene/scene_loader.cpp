@@ -10,6 +10,8 @@
 #include "scene/scene_loader.h"
 
 #include "scene/mapped_file.h"
+#include "scene/obj_reader.h"
+#include "scene/obj_scene.h"
 #include "scene/scene_lexer.h"
 #include "scene/scene_parser.h"
 
@@ -164,12 +166,17 @@ Scene parseScene(std::string_view text, const std::string& fileName) {
     return parseScene(text, fileName, SceneParseOptions{});
 }
 
-Scene loadScene(const std::filesystem::path& path) {
+Scene loadScene(const std::filesystem::path& path, const ObjSceneSetup& modelSetup) {
     const std::string name = path.string();
     std::error_code error;
     // open succeeds on a directory on Linux and only the read fails; say it plainly.
     if (std::filesystem::is_directory(path, error))
         throw SceneError(name, 0, std::string("cannot open file: ") + std::strerror(EISDIR));
+    if (isObjPath(path)) return sceneFromObj(readObjFile(path), modelSetup, name);
+    if (isPlyPath(path))
+        throw SceneError(name, 0,
+                         "not an OBJ file: PLY models are not read; convert it to OBJ first (for "
+                         "example with assimp export, Debian's assimp-utils)");
     const MappedFile file(name);
     return parseScene(file.text(), name);
 }

@@ -3,6 +3,7 @@
 // errors and warnings of one pass.
 #pragma once
 
+#include "scene/obj_scene.h"
 #include "scene/scene.h"
 #include "scene/scene_error.h"
 
@@ -24,5 +25,7 @@ struct SceneParseOptions {
 Scene parseScene(std::string_view text, const std::string& fileName,
                  const SceneParseOptions& options);
 
-// Reads and parses a file; a missing, unreadable or binary file is a SceneError.
-Scene loadScene(const std::filesystem::path& path);
+// Reads and parses a file; a missing, unreadable or binary file is a SceneError. A path
+// ending in .obj is read as a Wavefront OBJ model and made a scene by the rules of
+// obj_scene.h (docs/models.md); one ending in .ply is refused with a message.
+Scene loadScene(const std::filesystem::path& path, const ObjSceneSetup& modelSetup = {});

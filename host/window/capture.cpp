@@ -1,5 +1,6 @@
-// What the window writes out: the P key's screenshot (once refinement is done, so it is
-// the headless image at the same settings) and the one JSON line of --bench-window.
+// What the window writes out: the P key's screenshot of what is shown, Shift+P's once
+// refinement is done (the headless image at the same settings), and the one JSON line of
+// --bench-window.
 #include "window/capture.h"
 
 #include "cli/command_line.h"
@@ -10,18 +11,48 @@
 #include <filesystem>
 #include <string>
 
-void writeScreenshot(Viewer& viewer) {
-    viewer.screenshotPending = false;
+namespace {
+
+// The headless twin of an image of `samples` samples per pixel: exact when refinement is
+// done, or with the r2 sampler, whose sample s does not depend on the sample count (the
+// window adds samples 0..s-1 in the order a headless render does).
+std::string headlessTwin(const Viewer& viewer, std::uint32_t width, std::uint32_t height,
+                         std::uint32_t samples) {
     const Options& options = *viewer.options;
-    const std::filesystem::path path =
-        nextScreenshotPath(std::filesystem::current_path(), options.scenePath.stem().string());
+    if (samples != viewer.sampleTarget && options.kernel.sampler != Sampler::R2)
+        return "; the " + choiceName(samplerNames(), options.kernel.sampler) +
+               " sampler places its samples by their count, so only the finished image (" +
+               std::to_string(viewer.sampleTarget) + " samples) has a headless twin";
+    return "; the same image headless: " +
+           headlessCommand(options, viewer.camera, int(width), int(height), samples);
+}
+
+} // namespace
+
+void writeScreenshot(Viewer& viewer) {
+    viewer.snapshotNow = false;
+    viewer.screenshotPending = false;
+    viewer.screenshotViewChanged = false;
+    const Options& options = *viewer.options;
+    const std::uint32_t samples = viewer.samplesDone;
+    const std::filesystem::path path = nextScreenshotPath(
+        std::filesystem::current_path(), options.scenePath.stem().string(), samples);
     const Image8 image = readOutputImage(viewer.context, viewer.renderer);
     writePng(path, image);
-    const std::string command =
-        headlessCommand(options, viewer.camera, image.width, image.height, viewer.sampleTarget);
-    std::fprintf(
-        stderr, "Screenshot: wrote %s (%dx%d, %u samples per pixel); the same image headless: %s\n",
-        path.string().c_str(), image.width, image.height, viewer.sampleTarget, command.c_str());
+    const std::string of = samples == viewer.sampleTarget
+                               ? ""
+                               : " of " + std::to_string(viewer.sampleTarget) + ", still refining";
+    std::fprintf(stderr, "Screenshot: wrote %s (%dx%d, %u samples per pixel%s)%s\n",
+                 path.string().c_str(), image.width, image.height, samples, of.c_str(),
+                 headlessTwin(viewer, image.width, image.height, samples).c_str());
+}
+
+void dropPendingScreenshot(const Viewer& viewer) {
+    if (!viewer.screenshotPending) return;
+    const Image& output = viewer.renderer.outputImage;
+    std::fprintf(stderr, "Screenshot: dropped, the window closed at %u of %u samples per pixel%s\n",
+                 viewer.samplesDone, viewer.sampleTarget,
+                 headlessTwin(viewer, output.width, output.height, viewer.sampleTarget).c_str());
 }
 
 void countBenchFrame(Viewer& viewer, std::uint32_t samples) {

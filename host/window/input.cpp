@@ -8,8 +8,10 @@
 #include "window/reload.h"
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
+#include <string>
 
 namespace {
 
@@ -35,7 +37,26 @@ void toggleVsync(Viewer& viewer) {
     viewer.swapchainStale = true; // the loop recreates it with the new present mode
 }
 
-void onKey(GLFWwindow* window, int key, int, int action, int) {
+// The shortest text that reads back as exactly this double (0.2, not 0.20000000000000001).
+std::string shortest(double value) {
+    char text[32];
+    const auto result = std::to_chars(text, text + sizeof text, value);
+    return std::string(text, result.ptr);
+}
+
+std::string triple(glm::dvec3 v) {
+    return shortest(v.x) + "," + shortest(v.y) + "," + shortest(v.z);
+}
+
+// O: the current view as command-line options, exact, to paste into a headless command.
+void printCameraOptions(const Viewer& viewer) {
+    const CameraPose& camera = viewer.camera;
+    std::fprintf(stderr, "Camera: --camera-pos %s --camera-target %s --camera-up %s --fov %s\n",
+                 triple(camera.position).c_str(), triple(camera.target).c_str(),
+                 triple(camera.up).c_str(), shortest(viewer.options->fovDegrees).c_str());
+}
+
+void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     if (action != GLFW_PRESS) return;
     Viewer& viewer = viewerOf(window);
     switch (key) {
@@ -46,12 +67,21 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     case GLFW_KEY_R:
         reloadScene(viewer); // also recompiles the shaders: the renderer is built anew
         break;
-    case GLFW_KEY_P:
-        viewer.screenshotPending = true;
-        if (refining(viewer))
-            std::fprintf(stderr,
-                         "Screenshot: written once all %u samples per pixel are in (%u so far)\n",
-                         viewer.sampleTarget, viewer.samplesDone);
+    case GLFW_KEY_P: // what is shown now; with Shift, the finished image of this view
+        if ((mods & GLFW_MOD_SHIFT) == 0) {
+            viewer.snapshotNow = true;
+        } else {
+            viewer.screenshotPending = true;
+            viewer.screenshotViewChanged = false;
+            if (refining(viewer))
+                std::fprintf(stderr,
+                             "Screenshot: written once all %u samples per pixel are in (%u so "
+                             "far)\n",
+                             viewer.sampleTarget, viewer.samplesDone);
+        }
+        break;
+    case GLFW_KEY_O:
+        printCameraOptions(viewer);
         break;
     case GLFW_KEY_V:
         toggleVsync(viewer);
@@ -122,9 +152,12 @@ bool applyFlyKeys(Viewer& viewer) {
         std::min(std::chrono::duration<double>(now - viewer.lastMove).count(), 0.1);
     viewer.lastMove = now;
     auto held = [&](int key) { return glfwGetKey(viewer.window, key) == GLFW_PRESS ? 1.0 : 0.0; };
-    const glm::dvec3 direction(held(GLFW_KEY_D) - held(GLFW_KEY_A),
-                               held(GLFW_KEY_SPACE) - held(GLFW_KEY_LEFT_SHIFT),
-                               held(GLFW_KEY_W) - held(GLFW_KEY_S));
+    // The arrow keys move as W A S D do.
+    auto either = [&](int key, int arrow) { return std::max(held(key), held(arrow)); };
+    const glm::dvec3 direction(either(GLFW_KEY_D, GLFW_KEY_RIGHT) -
+                                   either(GLFW_KEY_A, GLFW_KEY_LEFT),
+                               held(GLFW_KEY_SPACE) - held(GLFW_KEY_LEFT_CONTROL),
+                               either(GLFW_KEY_W, GLFW_KEY_UP) - either(GLFW_KEY_S, GLFW_KEY_DOWN));
     if (direction == glm::dvec3(0.0)) return false;
     const double speed = std::max(viewer.bounds.radius, 1.0) * 0.5;
     setCamera(viewer, flyCamera(viewer.camera, direction * (speed * seconds)));

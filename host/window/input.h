@@ -7,6 +7,6 @@
 // Points the window's GLFW callbacks at viewer (also the window's user pointer).
 void installInputCallbacks(Viewer& viewer);
 
-// W/A/S/D, Space and Left Shift held down: fly at a speed that crosses the scene in
-// about four seconds. Returns whether one is held (the loop then keeps polling).
+// W/A/S/D (or the arrow keys), Space and Left Ctrl held down: fly at a speed that crosses the scene
+// in about four seconds. Returns whether one is held (the loop then keeps polling).
 bool applyFlyKeys(Viewer& viewer);

@@ -2,6 +2,7 @@
 // swapped in only when it could be built, so that a typo keeps the last good image.
 #include "window/reload.h"
 
+#include "cli/options.h"
 #include "gpu/vk_check.h"
 #include "scene/scene_loader.h"
 #include "scene/warning_summary.h"
@@ -42,7 +43,7 @@ void reloadShaders(Viewer& viewer) {
 void reloadScene(Viewer& viewer) {
     Scene scene;
     try {
-        scene = loadScene(viewer.options->scenePath);
+        scene = loadScene(viewer.options->scenePath, objSceneSetup(*viewer.options));
     } catch (const SceneError& error) {
         std::fprintf(stderr, "%s\nKeeping the last good scene.\n", error.what());
         return;

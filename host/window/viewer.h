@@ -4,6 +4,8 @@
 // Internal to the window: nothing outside those files includes it.
 #pragma once
 
+#include <cstdio>
+
 #include "base/file_watch.h"
 #include "cli/options.h"
 #include "gpu/context.h"
@@ -63,8 +65,10 @@ struct Viewer {
     bool swapchainStale = true; // no usable swapchain yet, or OUT_OF_DATE/SUBOPTIMAL was reported
     bool presentNeeded = true;  // the window does not show the output image
     bool vsync = true;
-    bool screenshotPending = false; // P: write it once refinement is done
-    bool storyPending = false;      // I: print the pixel story under the mouse after the frame
+    bool snapshotNow = false;           // P: write what is shown, after this frame
+    bool screenshotPending = false;     // Shift+P: write it once refinement is done
+    bool screenshotViewChanged = false; // the camera moved since Shift+P (said once)
+    bool storyPending = false;          // I: print the pixel story under the mouse after the frame
     bool continuous = false; // --redraw-continuously: restart the sum every frame (soak test)
 
     // --bench-window N: frames timed after the first.
@@ -84,7 +88,16 @@ inline void restartRefinement(Viewer& viewer) {
     viewer.samplesPerFrame = 1; // the first frame after a change comes quickly
 }
 
+// A Shift+P request waiting when the view changes is for the new view, and says so (once
+// per request), rather than silently becoming another image.
 inline void setCamera(Viewer& viewer, const CameraPose& camera) {
+    if (viewer.screenshotPending && !viewer.screenshotViewChanged && camera != viewer.camera) {
+        viewer.screenshotViewChanged = true;
+        std::fprintf(stderr,
+                     "Screenshot: the view moved before its %u samples per pixel were in; "
+                     "the request now waits for the new view\n",
+                     viewer.sampleTarget);
+    }
     viewer.camera = camera;
     setCamera(viewer.renderer, camera);
     restartRefinement(viewer);

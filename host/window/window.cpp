@@ -122,7 +122,8 @@ void runLoop(Viewer& viewer) {
         }
         if (viewer.presentNeeded || refining(viewer)) drawFrame(viewer);
         if (viewer.storyPending) printStoryUnderCursor(viewer); // the image is traced by now
-        if (viewer.screenshotPending && !refining(viewer) && !viewer.continuous)
+        if (viewer.snapshotNow ||
+            (viewer.screenshotPending && !refining(viewer) && !viewer.continuous))
             writeScreenshot(viewer);
         finishBenchIfDone(viewer);
     }
@@ -166,5 +167,6 @@ bool runWindow(const Options& options, const Scene& scene) {
     open(viewer, options, scene);
     std::fputs(windowKeysLine().c_str(), stderr);
     runLoop(viewer);
+    dropPendingScreenshot(viewer);
     return true;
 }

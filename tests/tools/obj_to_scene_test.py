@@ -99,7 +99,7 @@ class ObjToScene(unittest.TestCase):
         self.assertTrue(read(png, "rb")[:8] == b"\x89PNG\r\n\x1a\n")
 
     def test_missing_normals_are_smooth_area_weighted_and_outward(self):
-        _run, scene = convert(CUBE, "cube_normals")
+        _run, scene = convert(CUBE, "cube_normals", "--crease", "180")
         for triangle in triangles_of(scene):
             for corner in triangle:
                 # Each corner of a cube touches three faces of equal area: the average
@@ -108,17 +108,22 @@ class ObjToScene(unittest.TestCase):
                 for got, want in zip(corner["nor"], expected):
                     self.assertAlmostEqual(got, want, places=6)
 
-    def test_fit_centres_the_model_in_front_of_the_camera(self):
+    def test_fit_puts_the_model_ahead_filling_the_share_of_the_view(self):
         # The cube made 5 units wide along x only, and moved far off.
         box = "".join("v %g %g %g\n" % (10 + 2.5 * x, -4 + y, 7 + z) for x in (-1, 1) for y in (-1, 1) for z in (-1, 1))
         run, scene = convert(box + "f 1 2 4 3\nf 5 6 8 7\nf 1 3 7 5\n", "cube_fit", "--fit")
         self.assertEqual(run.returncode, 0, run.stderr)
         positions = [c["pos"] for t in triangles_of(scene) for c in t]
-        for axis, centre in enumerate((0.0, 0.0, -3.0)):
+        for axis in (0, 1):
             low, high = min(p[axis] for p in positions), max(p[axis] for p in positions)
-            self.assertAlmostEqual((low + high) / 2, centre, places=5)
+            self.assertAlmostEqual((low + high) / 2, 0.0, places=5)
         self.assertAlmostEqual(max(max(p[a] for p in positions) - min(p[a] for p in positions) for a in range(3)),
                                1.5, places=5)
+        # The outermost corner, seen from the origin, lies 80% of the way to the edge of a
+        # 60-degree, 4:3 view (here the width limits: the box is wide).
+        share = max(max(abs(p[1]) / (-p[2] * math.tan(math.radians(30))),
+                        abs(p[0]) / (-p[2] * math.tan(math.radians(30)) * 4 / 3)) for p in positions)
+        self.assertAlmostEqual(share, 0.8, places=6)
 
     def test_corner_forms_given_normals_and_fan_triangulation(self):
         obj = ("v 0 0 -3\nv 1 0 -3\nv 1.5 1 -3\nv 0.5 1.5 -3\nv -0.5 1 -3\nvt 0 0\nvn 0 0 2\n"

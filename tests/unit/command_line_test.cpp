@@ -100,6 +100,11 @@ std::vector<std::vector<std::string>> optionSets() {
         {"--help"},
         {"--version"},
         {"a.scene", "--check"},
+        {"model.obj", "--save-scene", "out dir/model.scene"},
+        {"model.obj", "--save-scene", "m.scene", "-o", "m.png"},
+        {"model.obj", "--up", "z", "--crease", "0", "--no-ground"},
+        {"model.obj", "--up", "-x", "--crease", "180"},
+        {"model.obj", "--crease", "12.5"},
         {"a.scene", "-o", "out.jpg", "--quality", "1"},
         {"a.scene", "-o", "o.JPEG", "--quality", "100"},
         {"a.scene", "-o", "out.jpg", "--quality", "90"}, // the default, but given
@@ -115,9 +120,12 @@ std::vector<std::vector<std::string>> optionSets() {
     for (const char* seed : {"0", "7", "4294967295"})
         sets.push_back({"a.scene", "--seed", seed});
     const std::vector<std::pair<const char*, std::vector<const char*>>> choices = {
-        {"--sampler", {"grid", "stratified", "r2"}},      {"--precision", {"fp32", "fp64"}},
-        {"--sphere-test", {"naive", "stable"}},           {"--triangle-test", {"mt", "watertight"}},
+        {"--sampler", {"grid", "stratified", "r2"}},
+        {"--precision", {"fp32", "fp64"}},
+        {"--sphere-test", {"naive", "stable"}},
+        {"--triangle-test", {"mt", "watertight"}},
         {"--offset", {"fixed", "scaled", "error-bound"}},
+        {"--up", {"y", "-y", "z", "-z", "x", "-x"}},
     };
     for (const auto& [flag, names] : choices)
         for (const char* name : names)

@@ -50,7 +50,8 @@ TEST(WindowKeys, HelpHoldsTheKeysAndTheWindowLineIsOneLine) {
 }
 
 // The GLFW names of what the table lists: its keys split at " or " and "/", named as GLFW
-// does ("Left Shift" is GLFW_KEY_LEFT_SHIFT), and the gestures by the input they read.
+// does ("Left Control" is GLFW_KEY_LEFT_CONTROL, "Shift+P" GLFW_KEY_P with GLFW_MOD_SHIFT), and
+// the gestures by the input they read.
 std::set<std::string> glfwNamesInTable() {
     std::set<std::string> names;
     for (const WindowKey& entry : kWindowKeys) {
@@ -66,7 +67,10 @@ std::set<std::string> glfwNamesInTable() {
                 names.insert("glfwSetScrollCallback");
             else if (key == "Esc")
                 names.insert("GLFW_KEY_ESCAPE");
-            else {
+            else if (key.rfind("Shift+", 0) == 0) { // the key, read with the Shift modifier
+                names.insert("GLFW_MOD_SHIFT");
+                names.insert("GLFW_KEY_" + key.substr(6));
+            } else {
                 for (char& c : key)
                     c = c == ' ' ? '_' : char(std::toupper(static_cast<unsigned char>(c)));
                 names.insert("GLFW_KEY_" + key);
@@ -80,7 +84,7 @@ TEST(WindowKeys, TheInputCodeHandlesExactlyTheListedKeys) {
     const std::string input = readFile(kSourceDir / "host/window/input.cpp");
     std::set<std::string> handled;
     const std::regex glfwName(
-        "GLFW_KEY_[A-Z0-9_]+|GLFW_MOUSE_BUTTON_[A-Z0-9_]+|glfwSetScrollCallback");
+        "GLFW_KEY_[A-Z0-9_]+|GLFW_MOUSE_BUTTON_[A-Z0-9_]+|GLFW_MOD_SHIFT|glfwSetScrollCallback");
     for (auto it = std::sregex_iterator(input.begin(), input.end(), glfwName);
          it != std::sregex_iterator(); ++it)
         handled.insert(it->str());

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # The progressive view under Xvfb: with --spp N the window refines to exactly the headless
 # --spp N image (tolerance 0), also from a moved camera; P writes a PNG identical to it and
-# prints a headless command that renders it again;
+# prints a headless command that renders it again; Shift+P once refined writes the same; O
+# prints the camera as options; mid-refinement (a second window), P writes what is shown
+# with its sample count K in its name, equal to headless --spp K, Shift+P waits, says when a
+# camera move retargets it and that it was dropped when the window closes first;
 # I prints the story of the pixel under the mouse, the JSON of headless --pixel;
 # V recreates the swapchain; a mouse drag moves the camera and C and Home reset it to the
 # default camera; Q quits with status 0 and the validation layer stays silent.
@@ -62,6 +65,28 @@ run_inside_xvfb() {
         fi
     else
         fail "P wrote no screenshot (log $log)"
+    fi
+
+    # Shift+P once refinement is done writes at once: the same image again.
+    press_key "$id" shift+p
+    if wait_for_log "$pid" "$log" "Screenshot: wrote" 2 30; then
+        local second
+        second=$(grep -F "Screenshot: wrote" "$log" | sed -n 2p | sed -E 's/^Screenshot: wrote (.*) \([0-9]+x.*$/\1/')
+        if [[ $second == *-screenshot-2-${SPP}spp.png ]] && "$image_diff" moved.png "$second" --tolerance 0 --min-match 100 > shot2-diff.txt 2>&1; then
+            pass "Shift+P once refined wrote $second at once, identical to the headless render"
+        else
+            fail "Shift+P: $second is misnamed or differs from moved.png: $(cat shot2-diff.txt 2>/dev/null)"
+        fi
+    else
+        fail "Shift+P wrote no screenshot (log $log)"
+    fi
+
+    # O prints the camera as options, word for word.
+    press_key "$id" o
+    if wait_for_log "$pid" "$log" "Camera: --camera-pos 3,4,2 --camera-target 0,0,-8 --camera-up 0,1,0.2 --fov 60" 1 20; then
+        pass "O printed the camera as options"
+    else
+        fail "O: no 'Camera: --camera-pos 3,4,2 ...' line (log $log)"
     fi
 
     # I prints the story of the pixel under the mouse (docs/pixel_story.md): the very JSON
@@ -130,10 +155,62 @@ run_inside_xvfb() {
     timeout 10 xdotool keydown --window "$id" w sleep 0.5 keyup --window "$id" w || true
     moved_view "holding W (fly)" fly-window
     reset_view Home home-after-fly-window
+    refined=$(grep -cF "Refined: $SPP samples" "$log")
+    timeout 10 xdotool keydown --window "$id" Up sleep 0.5 keyup --window "$id" Up || true
+    moved_view "holding Up (fly, as W)" up-window
+    reset_view Home home-after-up-window
 
     expect_clean_quit "$pid" "$id" q "$log"
+    mid_refinement
     echo "window progressive test: $passed passed, $failed failed (files in $output_dir)"
     ((failed == 0))
+}
+
+# A window that never finishes refining (--spp 65536): P writes what is shown, K samples
+# per pixel, equal to headless --spp K (the r2 sampler's sample s does not depend on the
+# count); Shift+P waits; a camera move retargets it, saying so; Q drops it, saying so.
+mid_refinement() {
+    local log=window-mid.log name id shot samples
+    name=$(basename "$scene")
+    timeout 150 "$raytracer" "$scene" --validate --width $WIDTH --height $HEIGHT --spp 65536 "${CAMERA[@]}" \
+        > "$log" 2>&1 &
+    local pid=$!
+    id=$(wait_for_window "$pid" "$name" 90) || { fail "no second window (log $log)"; cat "$log"; return; }
+    sleep 2
+    press_key "$id" p
+    if wait_for_log "$pid" "$log" "Screenshot: wrote" 1 30; then
+        local line
+        line=$(grep -F "Screenshot: wrote" "$log" | head -n 1)
+        shot=$(sed -E 's/^Screenshot: wrote (.*) \([0-9]+x.*$/\1/' <<< "$line")
+        samples=$(sed -E 's/^.*, ([0-9]+) samples per pixel of 65536, still refining\).*$/\1/' <<< "$line")
+        if [[ $samples =~ ^[0-9]+$ && $shot == *-${samples}spp.png ]]; then
+            headless mid.png "${CAMERA[@]}" --spp "$samples"
+            if "$image_diff" mid.png "$shot" --tolerance 0 --min-match 100 > mid-diff.txt 2>&1; then
+                pass "P mid-refinement wrote $shot ($samples of 65536 samples), identical to headless --spp $samples"
+            else
+                fail "P mid-refinement: $shot differs from headless --spp $samples: $(cat mid-diff.txt)"
+            fi
+        else
+            fail "P mid-refinement: unexpected line: $line"
+        fi
+    else
+        fail "P mid-refinement wrote nothing (log $log)"
+    fi
+    press_key "$id" shift+p
+    wait_for_log "$pid" "$log" "Screenshot: written once all 65536 samples per pixel are in (" 1 20 &&
+        pass "Shift+P mid-refinement waits, and says so" || fail "Shift+P: no waiting message (log $log)"
+    local x=$((WIDTH / 2)) y=$((HEIGHT / 2))
+    timeout 10 xdotool mousemove --window "$id" $x $y mousedown 1 mousemove --window "$id" $((x + 30)) $((y + 10)) \
+        sleep 0.2 mousemove --window "$id" $((x + 60)) $((y + 20)) sleep 0.2 mouseup 1 || true
+    wait_for_log "$pid" "$log" "Screenshot: the view moved before its 65536 samples per pixel were in; the request now waits for the new view" 1 20 &&
+        pass "a camera move after Shift+P retargets the request, and says so" ||
+        fail "no message when the view moved after Shift+P (log $log)"
+    expect_clean_quit "$pid" "$id" q "$log"
+    if grep -qE "^Screenshot: dropped, the window closed at [0-9]+ of 65536 samples per pixel; the same image headless: Raytracer " "$log"; then
+        pass "closing the window with Shift+P waiting says it was dropped, with the headless command"
+    else
+        fail "no 'Screenshot: dropped' line on closing (log $log)"
+    fi
 }
 
 if [[ $# == 5 && $1 == --inside-xvfb ]]; then

@@ -9,8 +9,8 @@ where the reference goes on with weight 0: the comparison stops there.
 """
 import json
 import pathlib
-import struct
-import zlib
+
+from png_read import read_png
 
 TOLERANCE = 1e-3  # float against double: t, colours and the rest, relative above 1
 LEVELS = 1        # 8-bit levels the final colours may differ by (a value on a rounding edge)
@@ -130,41 +130,8 @@ def object_lines(scene_path):
 
 def png_pixel(path, x, y):
     """[r, g, b] of pixel (x, y) of an 8-bit non-interlaced RGB or RGBA PNG."""
-    data = pathlib.Path(path).read_bytes()
-    pos, idat = 8, b""
-    while pos < len(data):
-        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        chunk = data[pos + 8:pos + 8 + length]
-        pos += 12 + length
-        if kind == b"IHDR":
-            width, height, depth, color_type = struct.unpack(">IIBB", chunk[:10])
-            if depth != 8 or color_type not in (2, 6) or chunk[12]:
-                raise RuntimeError(f"{path}: only 8-bit RGB/RGBA non-interlaced PNGs are read")
-        elif kind == b"IDAT":
-            idat += chunk
-    channels = 3 if color_type == 2 else 4
-    stride = width * channels
-    raw = zlib.decompress(idat)
-    previous = bytearray(stride)
-    for row in range(y + 1):
-        kind = raw[row * (stride + 1)]
-        line = bytearray(raw[row * (stride + 1) + 1:(row + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - channels] if i >= channels else 0
-            b = previous[i]
-            c = previous[i - channels] if i >= channels else 0
-            if kind == 1:
-                line[i] = (line[i] + a) & 255
-            elif kind == 2:
-                line[i] = (line[i] + b) & 255
-            elif kind == 3:
-                line[i] = (line[i] + (a + b) // 2) & 255
-            elif kind == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        previous = line
-    return list(previous[x * channels:x * channels + 3])
+    _width, _height, rows = read_png(path)
+    return list(rows[y][x])
 
 
 def load(text, who):

@@ -22,6 +22,7 @@ const char* const usage =
     "                        [--threads N] [--camera-pos X,Y,Z] [--camera-target X,Y,Z]\n"
     "                        [--camera-up X,Y,Z] [--pixel X,Y]\n"
     "Renders SCENE with the double-precision CPU reference (the model of docs/model.md).\n"
+    "SCENE may be an OBJ model, built as Raytracer builds it by default (docs/models.md).\n"
     "  -o OUT                 OUT.png: 8-bit; OUT.pfm or OUT.exr: float, each pixel's average\n"
     "                         of clamped samples before the rounding to 8 bits\n"
     "  --width W --height H   image size, default 640 480\n"
@@ -144,7 +145,11 @@ int main(int argc, char** argv) {
     }
 
     try {
-        const Scene scene = loadScene(scenePath);
+        // An OBJ model is built as Raytracer builds it for the same view (docs/models.md).
+        ObjSceneSetup modelSetup;
+        modelSetup.fovDegrees = settings.fovDegrees;
+        modelSetup.aspect = double(settings.width) / double(settings.height);
+        const Scene scene = loadScene(scenePath, modelSetup);
         for (const std::string& warning : scene.warnings)
             std::fprintf(stderr, "%s\n", warning.c_str());
         if (!outputPath.empty()) {

@@ -1,0 +1,44 @@
+// A Wavefront OBJ model as its file states it (obj_reader.h reads it), before anything a
+// scene needs is added (obj_scene.h): positions, normals, faces and their materials.
+#pragma once
+
+#include "scene/scene.h"
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+// One corner of a face: indices into ObjModel's positions and normals (0-based).
+struct ObjCorner {
+    std::uint32_t position = 0;
+    std::optional<std::uint32_t> normal; // none: the corner gets a smooth normal
+};
+
+// A triangle of a face's fan (a polygon is split from its first corner).
+struct ObjTriangle {
+    ObjCorner corners[3];
+    std::uint32_t material = 0; // into ObjModel::materials
+    std::uint32_t face = 0;     // into ObjModel::faces: the polygon it was split from
+    std::int64_t line = 0;      // the face's line in the OBJ file
+};
+
+struct ObjModel {
+    std::vector<glm::dvec3> positions;
+    // `v x y z r g b` (a common extension): the vertex's diffuse colour, clamped to [0, 1].
+    std::vector<std::optional<glm::dvec3>> colors;
+    std::vector<glm::dvec3> normals; // vn, as given
+    // Each face's position indices, whole: smooth normals are taken per polygon.
+    std::vector<std::vector<std::uint32_t>> faces;
+    std::vector<ObjTriangle> triangles;
+    // materials[0] is the default one, for faces without a known material.
+    std::vector<Material> materials;
+    std::vector<std::string> warnings; // "file:line: warning: ..."
+};
+
+// The material of faces that name none, or one that no material library defines: light grey.
+inline Material defaultObjMaterial() {
+    return Material{glm::dvec3(0.75), glm::dvec3(0.1), 30.0};
+}
+
+// Ns above this is clamped: the Phong exponent of the scene format has no use for more.
+inline constexpr double kMaxObjShininess = 1000.0;

@@ -1,0 +1,287 @@
+// The OBJ and MTL statements, one logical line at a time (obj_reader.h). Each message
+// is the one tools/obj_to_scene.py prints for the same line, so that the two readers
+// can be held to each other (tests/tools/obj_to_scene_test.py).
+#include "scene/obj_reader.h"
+
+#include "scene/mapped_file.h"
+#include "scene/scene_error.h"
+#include "scene/scene_lexer.h"
+
+#include <algorithm>
+#include <charconv>
+#include <map>
+#include <set>
+
+namespace {
+
+// One statement: its first line (a trailing backslash continues it on the next) and its
+// words before any '#'.
+struct Statement {
+    int line = 0;
+    std::vector<std::string_view> words;
+};
+
+// Calls onStatement for each logical line of text; LF, CRLF and a lone CR end a line.
+template <typename OnStatement>
+void forEachStatement(std::string_view text, OnStatement onStatement) {
+    std::string joined; // a continued line, put together
+    int line = 0, start = 0;
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        std::size_t end = text.find_first_of("\r\n", pos);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view physical = text.substr(pos, end - pos);
+        pos = end;
+        if (pos < text.size())
+            pos += (text[pos] == '\r' && pos + 1 < text.size() && text[pos + 1] == '\n') ? 2 : 1;
+        ++line;
+        if (joined.empty()) start = line;
+        if (!physical.empty() && physical.back() == '\\') {
+            joined.append(physical.substr(0, physical.size() - 1));
+            joined.push_back(' ');
+            if (pos < text.size()) continue;
+            physical = {};
+        } else if (!joined.empty()) {
+            joined.append(physical);
+        }
+        std::string_view logical = joined.empty() ? physical : std::string_view(joined);
+        logical = logical.substr(0, logical.find('#'));
+        Statement statement{start, {}};
+        scene_lexer::Tokenizer words{logical};
+        for (auto word = words.next(); !word.text.empty(); word = words.next())
+            statement.words.push_back(word.text);
+        if (!statement.words.empty()) onStatement(statement);
+        joined.clear();
+    }
+}
+
+std::string joinWords(const std::vector<std::string_view>& words, std::size_t from) {
+    std::string name;
+    for (std::size_t i = from; i < words.size(); ++i) {
+        if (i > from) name += ' ';
+        name += words[i];
+    }
+    return name;
+}
+
+// A reader of one file's statements: the place for its messages.
+struct Place {
+    const std::string& file;
+    int line;
+    [[noreturn]] void fail(const std::string& message) const {
+        throw SceneError(file, line, message);
+    }
+};
+
+// The words after the keyword as `count` to `count + optional` finite numbers.
+std::vector<double> numbers(const Place& place, const Statement& statement, std::size_t count,
+                            const std::string& what, std::size_t optional = 0) {
+    const std::size_t given = statement.words.size() - 1;
+    if (given < count || given > count + optional) {
+        const std::string wanted =
+            optional == 0 ? std::to_string(count)
+                          : std::to_string(count) + " to " + std::to_string(count + optional);
+        place.fail(what + " expects " + wanted + " numbers, got " + std::to_string(given));
+    }
+    std::vector<double> values;
+    for (std::size_t i = 1; i < statement.words.size(); ++i) {
+        const std::string_view word = statement.words[i];
+        double value = 0.0;
+        const auto status = scene_lexer::parseNumber(word, value);
+        if (status == scene_lexer::NumberStatus::invalid)
+            place.fail(what + ": '" + std::string(word) + "' is not a number");
+        if (status == scene_lexer::NumberStatus::nonFinite)
+            place.fail(what + ": '" + std::string(word) + "' is not a finite number");
+        values.push_back(value);
+    }
+    return values;
+}
+
+glm::dvec3 clampedColor(const std::vector<double>& values, std::size_t first) {
+    return glm::clamp(glm::dvec3(values[first], values[first + 1], values[first + 2]), 0.0, 1.0);
+}
+
+// newmtl name -> index into the model's materials, from one MTL file.
+void readMtl(const MtlFile& file, ObjModel& model, std::map<std::string, std::uint32_t>& names) {
+    std::optional<std::uint32_t> current;
+    bool any = false;
+    forEachStatement(*file.text, [&](const Statement& statement) {
+        const Place place{file.path, statement.line};
+        const std::string_view keyword = statement.words[0];
+        if (keyword == "newmtl") {
+            if (statement.words.size() < 2) place.fail("newmtl needs a name");
+            current = static_cast<std::uint32_t>(model.materials.size());
+            model.materials.push_back(defaultObjMaterial());
+            names[joinWords(statement.words, 1)] = *current;
+            any = true;
+        } else if (keyword == "Kd" || keyword == "Ks") {
+            const std::string name(keyword);
+            if (!current) place.fail(name + " before any newmtl");
+            if (statement.words.size() > 1 &&
+                (statement.words[1] == "spectral" || statement.words[1] == "xyz"))
+                place.fail(name + " " + std::string(statement.words[1]) +
+                           " colours are not supported; use r g b");
+            std::vector<double> rgb = numbers(place, statement, 1, name, 2);
+            if (rgb.size() == 2) place.fail(name + " expects 1 or 3 numbers, got 2");
+            if (rgb.size() == 1) rgb = {rgb[0], rgb[0], rgb[0]};
+            Material& material = model.materials[*current];
+            (keyword == "Kd" ? material.diffuse : material.specular) = clampedColor(rgb, 0);
+        } else if (keyword == "Ns") {
+            if (!current) place.fail("Ns before any newmtl");
+            model.materials[*current].shininess =
+                std::clamp(numbers(place, statement, 1, "Ns")[0], 0.0, kMaxObjShininess);
+        }
+        // Ka, Ke, d, Tr, illum, Ni, maps: nothing in this renderer's model uses them.
+    });
+    if (!any) model.warnings.push_back(file.path + ": warning: no materials (newmtl) found");
+}
+
+// Whether a word is a whole number as OBJ indices are written: a sign, then digits.
+bool isWholeNumber(std::string_view word) {
+    if (!word.empty() && (word[0] == '+' || word[0] == '-')) word.remove_prefix(1);
+    return !word.empty() &&
+           std::all_of(word.begin(), word.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// An OBJ index (1-based, or negative: counted back from the last so far) made 0-based.
+std::uint32_t resolveIndex(const Place& place, std::string_view word, std::size_t count,
+                           const std::string& what) {
+    if (!isWholeNumber(word))
+        place.fail(what + " index '" + std::string(word) + "' is not a whole number");
+    const std::string_view digits = word[0] == '+' ? word.substr(1) : word;
+    long long index = 0;
+    const bool huge = std::from_chars(digits.data(), digits.data() + digits.size(), index).ec !=
+                      std::errc(); // out of range of 64 bits: out of range of any model too
+    if (!huge && index == 0)
+        place.fail(what + " index 0: OBJ indices start at 1 (or -1 for the last)");
+    const long long resolved = index > 0 ? index - 1 : static_cast<long long>(count) + index;
+    if (huge || resolved < 0 || resolved >= static_cast<long long>(count))
+        place.fail(what + " index " + (huge ? std::string(digits) : std::to_string(index)) +
+                   " is out of range: " + std::to_string(count) + " " +
+                   (what == "vertex" ? "vertex positions" : "normals") + " defined so far");
+    return static_cast<std::uint32_t>(resolved);
+}
+
+ObjCorner parseCorner(const Place& place, std::string_view word, const ObjModel& model) {
+    std::vector<std::string_view> parts;
+    for (std::size_t from = 0;;) {
+        const std::size_t slash = word.find('/', from);
+        parts.push_back(word.substr(from, slash == std::string_view::npos ? slash : slash - from));
+        if (slash == std::string_view::npos) break;
+        from = slash + 1;
+    }
+    if (parts.size() > 3 || parts[0].empty())
+        place.fail("face corner '" + std::string(word) + "' is not v, v/vt, v/vt/vn or v//vn");
+    ObjCorner corner;
+    corner.position = resolveIndex(place, parts[0], model.positions.size(), "vertex");
+    if (parts.size() == 3 && !parts[2].empty())
+        corner.normal = resolveIndex(place, parts[2], model.normals.size(), "normal");
+    return corner;
+}
+
+std::string directoryOf(const std::string& path) {
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    return parent.empty() ? std::string() : parent.string();
+}
+
+} // namespace
+
+ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlLookup& lookUpMtl) {
+    if (const auto reason = scene_lexer::binaryReason(text))
+        throw SceneError(fileName, 0, "not an OBJ file: it is binary (" + *reason + ")");
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3); // UTF-8 byte-order mark
+    ObjModel model;
+    model.materials.push_back(defaultObjMaterial());
+    std::map<std::string, std::uint32_t> names;
+    std::uint32_t material = 0;
+    std::set<std::string, std::less<>> ignored;
+    forEachStatement(text, [&](const Statement& statement) {
+        const Place place{fileName, statement.line};
+        const std::string_view keyword = statement.words[0];
+        const std::string at = sceneLocation(fileName, statement.line);
+        if (keyword == "v") {
+            const std::vector<double> values = numbers(place, statement, 3, "v", 4);
+            model.positions.emplace_back(values[0], values[1], values[2]);
+            // x y z [w], or x y z r g b with a colour per vertex.
+            model.colors.push_back(values.size() >= 6 ? std::optional(clampedColor(values, 3))
+                                                      : std::nullopt);
+        } else if (keyword == "vn") {
+            const std::vector<double> values = numbers(place, statement, 3, "vn");
+            model.normals.emplace_back(values[0], values[1], values[2]);
+        } else if (keyword == "f") {
+            const std::size_t count = statement.words.size() - 1;
+            if (count < 3)
+                place.fail("a face needs at least 3 corners, got " + std::to_string(count));
+            std::vector<ObjCorner> corners;
+            std::vector<std::uint32_t> face;
+            for (std::size_t i = 1; i <= count; ++i) {
+                corners.push_back(parseCorner(place, statement.words[i], model));
+                face.push_back(corners.back().position);
+            }
+            model.faces.push_back(std::move(face));
+            for (std::size_t i = 1; i + 1 < corners.size(); ++i) // a fan from the first corner
+                model.triangles.push_back({{corners[0], corners[i], corners[i + 1]},
+                                           material,
+                                           static_cast<std::uint32_t>(model.faces.size() - 1),
+                                           statement.line});
+        } else if (keyword == "mtllib") {
+            for (std::size_t i = 1; i < statement.words.size(); ++i) {
+                const MtlFile library = lookUpMtl(std::string(statement.words[i]));
+                if (library.text)
+                    readMtl(library, model, names);
+                else
+                    model.warnings.push_back(at + "warning: material library " + library.path +
+                                             " not found; default material used");
+            }
+        } else if (keyword == "usemtl") {
+            const std::string name = joinWords(statement.words, 1);
+            const auto found = names.find(name);
+            material = found == names.end() ? 0 : found->second;
+            if (found == names.end())
+                model.warnings.push_back(at + "warning: unknown material '" + name +
+                                         "'; default material used");
+        } else if (keyword == "vt" || keyword == "vp" || keyword == "o" || keyword == "g" ||
+                   keyword == "s") {
+            // texture coordinates, object and group names, smoothing groups
+        } else if (ignored.insert(std::string(keyword)).second) {
+            model.warnings.push_back(at + "warning: '" + std::string(keyword) +
+                                     "' statements are ignored");
+        }
+    });
+    if (model.triangles.empty()) throw SceneError(fileName, 0, "no faces (f) found");
+    return model;
+}
+
+ObjModel readObjFile(const std::filesystem::path& path) {
+    const std::string name = path.string();
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error))
+        throw SceneError(name, 0, "cannot open file: Is a directory");
+    const MappedFile file(name);
+    const std::string folder = directoryOf(name);
+    return parseObj(file.text(), name, [&](const std::string& library) {
+        MtlFile mtl{folder.empty() ? library : (std::filesystem::path(folder) / library).string(),
+                    std::nullopt};
+        if (!std::filesystem::exists(mtl.path, error)) return mtl;
+        const MappedFile text(mtl.path); // an unreadable library is an error, as the OBJ is
+        mtl.text = std::string(text.text());
+        return mtl;
+    });
+}
+
+namespace {
+std::string lowerExtension(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
+}
+} // namespace
+
+bool isObjPath(const std::filesystem::path& path) {
+    return lowerExtension(path) == ".obj";
+}
+
+bool isPlyPath(const std::filesystem::path& path) {
+    return lowerExtension(path) == ".ply";
+}

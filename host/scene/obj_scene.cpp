@@ -1,0 +1,237 @@
+// ObjModel to Scene (obj_scene.h). The arithmetic is the same, operation for operation and
+// in the same order, as tools/obj_to_scene.py's in double precision, so that both write
+// the same scene text; docs/models.md states the rules.
+#include "scene/obj_scene.h"
+
+#include "scene/scene_error.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace {
+
+constexpr double kPi = 3.141592653589793;
+
+double length(glm::dvec3 v) {
+    return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+}
+
+glm::dvec3 normalizedOrZero(glm::dvec3 v) {
+    const double n = length(v);
+    return n > 0.0 ? glm::dvec3(v.x / n, v.y / n, v.z / n) : glm::dvec3(0.0);
+}
+
+double dot(glm::dvec3 a, glm::dvec3 b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+// The up axis turned onto +y: swaps and negations only, so nothing is rounded.
+glm::dvec3 turnUp(glm::dvec3 v, UpAxis up) {
+    switch (up) {
+    case UpAxis::PosX:
+        return {-v.y, v.x, v.z};
+    case UpAxis::NegX:
+        return {v.y, -v.x, v.z};
+    case UpAxis::PosY:
+        return v;
+    case UpAxis::NegY:
+        return {v.x, -v.y, -v.z};
+    case UpAxis::PosZ:
+        return {v.x, v.z, -v.y};
+    case UpAxis::NegZ:
+        return {v.x, -v.z, v.y};
+    }
+    return v;
+}
+
+// Newell's sum of cross products over a polygon: its normal scaled by twice its area, so
+// adding such sums weights faces by area; per polygon, so how a quad was split does not
+// tilt its corners' normals.
+glm::dvec3 newellNormal(const std::vector<glm::dvec3>& positions,
+                        const std::vector<std::uint32_t>& face) {
+    glm::dvec3 normal(0.0);
+    for (std::size_t i = 1; i + 1 < face.size(); ++i) {
+        const glm::dvec3 a = positions[face[0]];
+        normal += glm::cross(positions[face[i]] - a, positions[face[i + 1]] - a);
+    }
+    return normal;
+}
+
+// The smooth normals of corners without one: for face f and its position p, the
+// normalised sum of the Newell normals of the faces around p (each face once, in file
+// order) whose unit normal is within the crease angle of f's, f itself always included.
+class SmoothNormals {
+  public:
+    SmoothNormals(const ObjModel& model, const std::vector<glm::dvec3>& positions,
+                  double creaseDegrees)
+        : cosine_(std::cos(creaseDegrees * (kPi / 180.0))), everywhere_(creaseDegrees >= 180.0) {
+        facesAround_.resize(positions.size());
+        for (std::size_t f = 0; f < model.faces.size(); ++f) {
+            newell_.push_back(newellNormal(positions, model.faces[f]));
+            unit_.push_back(normalizedOrZero(newell_.back()));
+            for (const std::uint32_t p : model.faces[f])
+                if (facesAround_[p].empty() || facesAround_[p].back() != f)
+                    if (std::find(facesAround_[p].begin(), facesAround_[p].end(), f) ==
+                        facesAround_[p].end())
+                        facesAround_[p].push_back(static_cast<std::uint32_t>(f));
+        }
+    }
+
+    glm::dvec3 at(std::uint32_t face, std::uint32_t position) const {
+        glm::dvec3 sum(0.0);
+        for (const std::uint32_t other : facesAround_[position])
+            if (everywhere_ || other == face || dot(unit_[face], unit_[other]) >= cosine_)
+                sum += newell_[other];
+        return normalizedOrZero(sum);
+    }
+
+  private:
+    double cosine_;
+    bool everywhere_;
+    std::vector<glm::dvec3> newell_, unit_;
+    std::vector<std::vector<std::uint32_t>> facesAround_;
+};
+
+bool isDegenerate(const std::vector<glm::dvec3>& positions, const ObjTriangle& triangle) {
+    const std::uint32_t a = triangle.corners[0].position, b = triangle.corners[1].position,
+                        c = triangle.corners[2].position;
+    if (a == b || b == c || a == c) return true;
+    return length(glm::cross(positions[b] - positions[a], positions[c] - positions[a])) == 0.0;
+}
+
+// Where the model goes: p -> (p - centre) * scale + offset.
+struct Placement {
+    glm::dvec3 centre{0.0};
+    double scale = 1.0;
+    glm::dvec3 offset{0.0};
+    glm::dvec3 low{0.0}, high{0.0}; // the box around the positions, placed
+};
+
+Placement placementOf(const std::vector<glm::dvec3>& positions, const ObjSceneSetup& setup) {
+    glm::dvec3 low = positions[0], high = positions[0];
+    for (const glm::dvec3& p : positions) {
+        low = glm::min(low, p);
+        high = glm::max(high, p);
+    }
+    Placement placement;
+    if (setup.fit) {
+        placement.centre = (low + high) / 2.0;
+        const double size = std::max({high.x - low.x, high.y - low.y, high.z - low.z});
+        placement.scale = size > 0.0 ? kFitSize / size : 1.0;
+        // Straight ahead at the distance where the outermost position, as the default
+        // camera sees it, lies kFrameShare of the way from the centre of the view to its
+        // edge: y / (distance - z) = share * tan(fov / 2), and x the same with the aspect.
+        const double tangent = std::tan(setup.fovDegrees * (kPi / 180.0) / 2.0);
+        const double vertical = kFrameShare * tangent, horizontal = vertical * setup.aspect;
+        double distance = 0.0;
+        for (const glm::dvec3& p : positions) {
+            const glm::dvec3 v = (p - placement.centre) * placement.scale;
+            distance = std::max(
+                distance, v.z + std::max(std::abs(v.y) / vertical, std::abs(v.x) / horizontal));
+        }
+        placement.offset = glm::dvec3(0.0, 0.0, -distance);
+    }
+    auto place = [&](glm::dvec3 p) {
+        return (p - placement.centre) * placement.scale + placement.offset;
+    };
+    placement.low = place(low);
+    placement.high = place(high);
+    return placement;
+}
+
+// Key (front left, high), fill (front right, low, dim) and rim (behind, high) lights at
+// distances in units of the model's radius from its centre, relative to the default
+// camera's right, up and backward axes.
+std::vector<Light> lightRig(const Placement& placement) {
+    const glm::dvec3 centre = (placement.low + placement.high) / 2.0;
+    const double radius = length(placement.high - placement.low) / 2.0;
+    const glm::dvec3 right(1.0, 0.0, 0.0), up(0.0, 1.0, 0.0), back(0.0, 0.0, 1.0);
+    struct Place {
+        double right, up, back, brightness;
+    };
+    const Place places[] = {{-2.0, 2.5, 2.5, 0.8}, {2.5, 0.5, 2.0, 0.3}, {0.5, 3.0, -3.0, 0.5}};
+    std::vector<Light> lights;
+    for (const Place& p : places) {
+        const glm::dvec3 offset =
+            right * (radius * p.right) + up * (radius * p.up) + back * (radius * p.back);
+        lights.push_back(Light{centre + offset, glm::dvec3(p.brightness), 0});
+    }
+    return lights;
+}
+
+// A floor under the model: a square kGroundSpan model sizes across, centred below it, at
+// the height of its lowest position, matte grey, facing up. Its two triangles come after
+// the model's, so where they touch, the model wins the tie (docs/model.md).
+constexpr double kGroundSpan = 100.0;
+void addGround(Scene& scene, const Placement& placement) {
+    const glm::dvec3 centre = (placement.low + placement.high) / 2.0;
+    const double half =
+        kGroundSpan *
+        std::max({placement.high.x - placement.low.x, placement.high.y - placement.low.y,
+                  placement.high.z - placement.low.z}) /
+        2.0;
+    const double y = placement.low.y;
+    const glm::dvec3 corners[4] = {{centre.x - half, y, centre.z - half},
+                                   {centre.x + half, y, centre.z - half},
+                                   {centre.x + half, y, centre.z + half},
+                                   {centre.x - half, y, centre.z + half}};
+    const Material matte{glm::dvec3(0.7), glm::dvec3(0.0), 1.0};
+    constexpr int kTriangles[2][3] = {{0, 3, 2}, {0, 2, 1}};
+    for (const auto& triangleCorners : kTriangles) {
+        Triangle triangle;
+        for (int k = 0; k < 3; ++k)
+            triangle.vertices[k] =
+                Vertex{corners[triangleCorners[k]], glm::dvec3(0.0, 1.0, 0.0), matte};
+        scene.triangles.push_back(triangle);
+    }
+}
+
+} // namespace
+
+Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std::string& fileName) {
+    std::vector<glm::dvec3> positions, normals;
+    for (const glm::dvec3& p : model.positions)
+        positions.push_back(turnUp(p, setup.up));
+    for (const glm::dvec3& n : model.normals)
+        normals.push_back(turnUp(n, setup.up));
+
+    const Placement placement = placementOf(positions, setup);
+    auto place = [&](glm::dvec3 p) {
+        return (p - placement.centre) * placement.scale + placement.offset;
+    };
+    const SmoothNormals smooth(model, positions, setup.creaseDegrees);
+
+    Scene scene;
+    scene.ambient = setup.ambient;
+    scene.lights = setup.lightRig
+                       ? lightRig(placement)
+                       : std::vector<Light>{Light{glm::dvec3(0.0, 4.0, 0.0), glm::dvec3(1.0), 0}};
+    scene.warnings = model.warnings;
+    std::size_t degenerate = 0;
+    for (const ObjTriangle& source : model.triangles) {
+        if (isDegenerate(positions, source)) {
+            ++degenerate;
+            continue;
+        }
+        Triangle triangle;
+        triangle.line = source.line;
+        for (int k = 0; k < 3; ++k) {
+            const ObjCorner& corner = source.corners[k];
+            Vertex& vertex = triangle.vertices[k];
+            vertex.position = place(positions[corner.position]);
+            vertex.normal =
+                corner.normal ? normals[*corner.normal] : smooth.at(source.face, corner.position);
+            vertex.material = model.materials[source.material];
+            if (model.colors[corner.position])
+                vertex.material.diffuse = *model.colors[corner.position];
+        }
+        scene.triangles.push_back(triangle);
+    }
+    if (setup.ground) addGround(scene, placement);
+    if (degenerate > 0)
+        scene.warnings.push_back(sceneLocation(fileName, 0) +
+                                 "warning: " + std::to_string(degenerate) +
+                                 " degenerate triangle(s) left out (two corners at one "
+                                 "position, or no area)");
+    return scene;
+}

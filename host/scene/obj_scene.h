@@ -1,0 +1,36 @@
+// An ObjModel made a Scene: what a model file lacks and a scene needs (an up axis, normals
+// where none are given, a place in view, a ground, lights, an ambient colour), each by a
+// rule of docs/models.md that tools/obj_to_scene.py follows too, operation for operation.
+#pragma once
+
+#include "scene/obj_model.h"
+#include "scene/scene.h"
+
+#include <string>
+
+// The model's axis that is up: it is turned (exactly: a swap and negation of coordinates)
+// so that this axis points along +y, the default camera's up.
+enum class UpAxis { PosX, NegX, PosY, NegY, PosZ, NegZ };
+
+struct ObjSceneSetup {
+    UpAxis up = UpAxis::PosY;
+    // A corner without a normal averages the faces around it that meet its own face at
+    // most this many degrees apart (0: flat faces; 180: smooth everywhere).
+    double creaseDegrees = 60.0;
+    // Scale the model to kFitSize across and put it straight ahead of the default camera,
+    // as far away as makes it fill kFrameShare of the view (of this field of view and
+    // aspect ratio); else the model stays where its file puts it.
+    bool fit = true;
+    double fovDegrees = 60.0;
+    double aspect = 640.0 / 480.0;
+    bool ground = true;   // a wide floor under the model, for its shadow
+    bool lightRig = true; // key, fill and rim lights around the model; else one at (0, 4, 0)
+    glm::dvec3 ambient{0.1};
+};
+
+inline constexpr double kFitSize = 1.5;
+inline constexpr double kFrameShare = 0.8;
+
+// Triangles with two corners at one position, or of no area, are left out, and counted in
+// a warning; fileName names the model in it.
+Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std::string& fileName);

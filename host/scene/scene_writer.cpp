@@ -1,0 +1,90 @@
+#include "scene/scene_writer.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+
+namespace {
+
+void appendNumber(std::string& out, double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", value);
+    out += std::strcmp(text, "-0") == 0 ? "0" : text;
+}
+
+void appendVector(std::string& out, const char* key, glm::dvec3 v) {
+    out += key;
+    for (int i = 0; i < 3; ++i) {
+        out += ' ';
+        appendNumber(out, v[i]);
+    }
+    out += '\n';
+}
+
+void appendMaterial(std::string& out, const Material& material) {
+    appendVector(out, "dif:", material.diffuse);
+    appendVector(out, "spe:", material.specular);
+    out += "shi: ";
+    appendNumber(out, material.shininess);
+    out += '\n';
+}
+
+} // namespace
+
+std::string sceneText(const Scene& scene) {
+    std::string out;
+    out += std::to_string(scene.lights.size() + scene.spheres.size() + scene.triangles.size());
+    out += '\n';
+    appendVector(out, "amb:", scene.ambient);
+    for (const Light& light : scene.lights) {
+        out += "light\n";
+        appendVector(out, "pos:", light.position);
+        appendVector(out, "col:", light.color);
+    }
+    for (const Sphere& sphere : scene.spheres) {
+        out += "sphere\n";
+        appendVector(out, "pos:", sphere.center);
+        out += "rad: ";
+        appendNumber(out, sphere.radius);
+        out += '\n';
+        appendMaterial(out, sphere.material);
+    }
+    for (const Triangle& triangle : scene.triangles) {
+        out += "triangle\n";
+        for (const Vertex& vertex : triangle.vertices) {
+            appendVector(out, "pos:", vertex.position);
+            appendVector(out, "nor:", vertex.normal);
+            appendMaterial(out, vertex.material);
+        }
+    }
+    return out;
+}
+
+void writeSceneFile(const std::filesystem::path& path, const Scene& scene) {
+    const std::string text = sceneText(scene);
+    const std::filesystem::path temporary = path.string() + ".tmp";
+    {
+        std::ofstream file(temporary, std::ios::binary);
+        if (!file) {
+            const std::filesystem::path folder = path.parent_path();
+            std::error_code error;
+            if (!folder.empty() && !std::filesystem::is_directory(folder, error))
+                throw std::runtime_error("cannot write " + path.string() + ": the folder " +
+                                         folder.string() + " does not exist");
+            throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(errno));
+        }
+        file.write(text.data(), static_cast<std::streamsize>(text.size()));
+        if (!file.flush()) {
+            std::filesystem::remove(temporary);
+            throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(errno));
+        }
+    }
+    std::error_code error;
+    std::filesystem::rename(temporary, path, error);
+    if (error) {
+        std::filesystem::remove(temporary);
+        throw std::runtime_error("cannot write " + path.string() + ": " + error.message());
+    }
+}

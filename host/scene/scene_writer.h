@@ -1,0 +1,17 @@
+// A Scene written back in the scene file format (docs/model.md): what --save-scene writes,
+// so that a model read from an OBJ file can be kept, edited and shared as a scene.
+#pragma once
+
+#include "scene/scene.h"
+
+#include <filesystem>
+#include <string>
+
+// The scene as text: the count, amb:, then lights, spheres and triangles in that order.
+// Numbers are written with 9 significant digits ("%.9g", -0 as 0), which every float the
+// GPU is given survives; tools/obj_to_scene.py writes the same.
+std::string sceneText(const Scene& scene);
+
+// Writes sceneText to path through a .tmp file renamed into place, so that a failure never
+// leaves half a scene; throws std::runtime_error naming the file.
+void writeSceneFile(const std::filesystem::path& path, const Scene& scene);

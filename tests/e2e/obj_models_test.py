@@ -1,0 +1,327 @@
+#!/usr/bin/env python3
+"""OBJ models read by Raytracer itself: the scene it builds (--save-scene) is the very text
+tools/obj_to_scene.py --fit --ground --rig writes, byte for byte, for models written here
+(quads, negative indices, given and missing normals, vertex colours, MTL materials, a
+missing library, degenerate faces, a z-up model, sharp edges), with and without the
+options that change it; a malformed model gets the same FILE:LINE: error as from the tool,
+with exit 3; a binary file or a PLY model is refused with a message; the model renders as
+the saved scene does; the framing fills 80% of the view; the ground shows the model's
+shadow; --crease 0 gives flat normals, 180 smooth ones.
+
+    obj_models_test.py RAYTRACER TOOL OUTPUT_DIR REFERENCE_RENDER IMAGE_DIFF
+"""
+
+import math
+import os
+import shutil
+import subprocess
+import sys
+import unittest
+
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "lib"))
+from png_read import read_png  # noqa: E402
+
+RAYTRACER, TOOL, OUTPUT, REFERENCE, IMAGE_DIFF = sys.argv[1:6] if len(sys.argv) >= 6 else (None,) * 5
+
+CUBE = """# cube of quads, no normals; the last face uses negative indices
+v -1 -1 -1
+v  1 -1 -1
+v  1  1 -1
+v -1  1 -1
+v -1 -1  1
+v  1 -1  1
+v  1  1  1
+v -1  1  1
+f 1 4 3 2
+f 1 2 6 5
+f 2 3 7 6
+f 3 4 8 7
+f 4 1 5 8
+f -4 -3 -2 -1
+"""
+
+MTL = "newmtl shiny\nKd 0.8 0.1 1.7\nKs 0.25\nNs 5000\nnewmtl plain\nKd 0.2 0.3 0.4\n"
+
+MODELS = {
+    "cube": (CUBE, None),
+    # a z-up model far off the origin, with per-vertex colours and a pentagon of given normals
+    "colours": ("v 10 20 30 1 0 0\nv 12 20 30 0 1 0\nv 11 22 31 0 0 1.5\nv 11 20 34\nvn 0 0 2\n"
+                "vt 0.5 0.5\nf 1/1/1 2/1/1 3//1\nf 1 2 4\nf 2 3 4\ng side\ns 1\nf 3 1 4\n", None),
+    "materials": ("mtllib mats.mtl\nv 0 0 -3\nv 1 0 -3\nv 0 1 -3\nv 1 1 -2\nusemtl shiny\nf 1 2 3\n"
+                  "usemtl plain\nf 2 4 3\nusemtl nosuch\nf 1 4 2\n", MTL),
+    "no_library": ("mtllib gone.mtl\nusemtl x\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", None),
+    # two degenerate faces (a repeated corner, three corners on a line) and a continued line
+    "degenerate": ("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 1 2\nf 1 2 3\nf 1 \\\n 2 4\n"
+                   "curv 0 1\n", None),
+    "crlf": ("v 0 0 0\r\nv 1 0 0\r\nv 0 1 1\r\nf 1 2 3\r\n", None),
+    "cylinder": (None, None),  # filled in below: smooth sides, sharp rims
+}
+
+# An 8-sided prism, z-up (2 tall, 1 across): sides 45 degrees apart, caps at 90.
+def prism(sides=8):
+    lines = []
+    for k in range(sides):
+        a = 2 * math.pi * k / sides
+        lines += ["v %.6f %.6f 0" % (0.5 * math.cos(a), 0.5 * math.sin(a)),
+                  "v %.6f %.6f 2" % (0.5 * math.cos(a), 0.5 * math.sin(a))]
+    for k in range(sides):
+        b0, t0, b1, t1 = 2 * k + 1, 2 * k + 2, 2 * ((k + 1) % sides) + 1, 2 * ((k + 1) % sides) + 2
+        lines.append("f %d %d %d %d" % (b0, b1, t1, t0))
+    lines.append("f " + " ".join(str(2 * k + 2) for k in range(sides)))
+    lines.append("f " + " ".join(str(2 * k + 1) for k in reversed(range(sides))))
+    return "\n".join(lines) + "\n"
+
+
+MODELS["cylinder"] = (prism(), None)
+
+# Raytracer's options for a model, and the tool's that build the same scene.
+VARIANTS = [
+    ([], ["--fit", "--ground", "--rig"]),
+    (["--no-ground", "--up", "z", "--crease", "0"], ["--fit", "--rig", "--up", "z", "--crease", "0"]),
+    (["--up", "-x", "--crease", "180", "--fov", "40", "--width", "300", "--height", "500"],
+     ["--fit", "--ground", "--rig", "--up", "-x", "--crease", "180", "--fov", "40", "--width", "300",
+      "--height", "500"]),
+]
+
+MALFORMED = {
+    "v 1 2\n": ":1: error: v expects 3 to 7 numbers, got 2",
+    "v 1 2 x\n": ":1: error: v: 'x' is not a number",
+    "v 1 2 1e999\n": ":1: error: v: '1e999' is not a finite number",
+    "v 0 0 0\nv 1 0 0\nf 1 2\n": ":3: error: a face needs at least 3 corners, got 2",
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 4\n": ":5: error: vertex index 4 is out of range: 3 vertex positions defined so far",
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n": ":4: error: vertex index -4 is out of range: 3 vertex positions defined so far",
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n": ":4: error: vertex index 0: OBJ indices start at 1 (or -1 for the last)",
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//1 2 3\n": ":4: error: normal index 1 is out of range: 0 normals defined so far",
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/a 2 3x\n": ":4: error: vertex index '3x' is not a whole number",
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/2/3/4 2 3\n": ":4: error: face corner '1/2/3/4' is not v, v/vt, v/vt/vn or v//vn",
+    "# nothing\n": ": error: no faces (f) found",
+    "v 0 0 0\x00\n": ": error: not an OBJ file: it is binary (NUL byte at offset 7)",
+    "v 0 0 0\nv \xff\n": ": error: not an OBJ file: it is binary (invalid UTF-8 at offset 10)",
+}
+
+BAD_MTL = {
+    "Kd 1 1 1\n": "mats.mtl:1: error: Kd before any newmtl",
+    "newmtl\n": "mats.mtl:1: error: newmtl needs a name",
+    "newmtl a\nKs 1 1\n": "mats.mtl:2: error: Ks expects 1 or 3 numbers, got 2",
+    "newmtl a\nKd spectral x.spd\n": "mats.mtl:2: error: Kd spectral colours are not supported; use r g b",
+    "newmtl a\nNs\n": "mats.mtl:2: error: Ns expects 1 numbers, got 0",
+}
+
+
+def write_model(name, obj, mtl=None, binary=False):
+    folder = os.path.join(OUTPUT, name)
+    shutil.rmtree(folder, ignore_errors=True)
+    os.makedirs(folder)
+    path = os.path.join(folder, name + ".obj")
+    with open(path, "wb") as handle:
+        handle.write(obj.encode("latin-1") if binary else obj.encode("utf-8"))
+    if mtl is not None:
+        with open(os.path.join(folder, "mats.mtl"), "w") as handle:
+            handle.write(mtl)
+    return path
+
+
+def run(*args):
+    return subprocess.run(list(args), capture_output=True, timeout=300)
+
+
+def read(path):
+    with open(path, "rb") as handle:
+        return handle.read()
+
+
+def warnings(stderr):
+    return sorted(line for line in stderr.decode().splitlines() if ": warning: " in line
+                  and "degenerate" not in line)
+
+
+class NativeModels(unittest.TestCase):
+    def test_native_scene_is_the_tools_scene_byte_for_byte(self):
+        for name, (obj, mtl) in MODELS.items():
+            path = write_model(name, obj, mtl)
+            for number, (ours_options, tool_options) in enumerate(VARIANTS):
+                with self.subTest(model=name, options=ours_options):
+                    native, converted = path[:-4] + ".native%d.scene" % number, path[:-4] + ".tool%d.scene" % number
+                    ours = run(RAYTRACER, path, "--save-scene", native, *ours_options)
+                    self.assertEqual(ours.returncode, 0, ours.stderr)
+                    self.assertEqual(ours.stderr.decode().splitlines()[-1], "Wrote " + native)
+                    tool = run(sys.executable, TOOL, path, "-o", converted, *tool_options)
+                    self.assertEqual(tool.returncode, 0, tool.stderr)
+                    self.assertEqual(read(native), read(converted))
+                    self.assertEqual(warnings(ours.stderr), warnings(tool.stderr))
+
+    def test_degenerate_faces_are_counted(self):
+        path = write_model("degenerate_count", *MODELS["degenerate"])
+        ours = run(RAYTRACER, path, "--save-scene", path + ".scene")
+        self.assertIn(path + ": warning: 2 degenerate triangle(s) left out (two corners at one "
+                      "position, or no area)", ours.stderr.decode())
+        self.assertIn(path + ":9: warning: 'curv' statements are ignored", ours.stderr.decode())
+
+    def test_malformed_models_name_file_and_line_as_the_tool_does(self):
+        for number, (obj, message) in enumerate(MALFORMED.items()):
+            with self.subTest(obj=obj):
+                path = write_model("bad%d" % number, obj, binary=True)
+                ours = run(RAYTRACER, path, "--check")
+                self.assertEqual(ours.returncode, 3, ours.stderr)
+                self.assertEqual(ours.stderr.decode(errors="replace"), path + message + "\n")
+                tool = run(sys.executable, TOOL, path, "--fit")
+                self.assertEqual(tool.returncode, 1)
+                self.assertEqual(tool.stderr.decode(errors="replace"), path + message + "\n")
+
+    def test_malformed_material_libraries_name_their_own_file_and_line(self):
+        for number, (mtl, message) in enumerate(BAD_MTL.items()):
+            with self.subTest(mtl=mtl):
+                path = write_model("badmtl%d" % number, "mtllib mats.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", mtl)
+                expected = os.path.join(os.path.dirname(path), message) + "\n"
+                ours = run(RAYTRACER, path, "--check")
+                self.assertEqual(ours.returncode, 3, ours.stderr)
+                self.assertEqual(ours.stderr.decode(), expected)
+                tool = run(sys.executable, TOOL, path, "--fit")
+                self.assertEqual(tool.stderr.decode(), expected)
+
+    def test_ply_is_refused_by_name(self):
+        folder = os.path.join(OUTPUT, "ply")
+        os.makedirs(folder, exist_ok=True)
+        path = os.path.join(folder, "bunny.ply")
+        with open(path, "wb") as handle:
+            handle.write(b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nend_header\n\x00\x01\x02")
+        ours = run(RAYTRACER, path, "--check")
+        self.assertEqual(ours.returncode, 3)
+        self.assertEqual(ours.stderr.decode(), path + ": error: not an OBJ file: PLY models are not read; "
+                         "convert it to OBJ first (for example with assimp export, Debian's assimp-utils)\n")
+
+    def test_the_model_renders_as_its_saved_scene(self):
+        path = write_model("render", CUBE)
+        scene, direct, via_scene = path + ".scene", path + ".png", path + ".scene.png"
+        size = ["--width", "96", "--height", "72", "--validate"]
+        self.assertEqual(run(RAYTRACER, path, "--save-scene", scene).returncode, 0)
+        drawn = run(RAYTRACER, path, "-o", direct, *size)
+        self.assertEqual(drawn.returncode, 0, drawn.stderr)
+        again = run(RAYTRACER, scene, "-o", via_scene, *size)
+        self.assertEqual(again.returncode, 0, again.stderr)
+        self.assertEqual(read(direct), read(via_scene))
+        check = run(RAYTRACER, path, "--check")
+        self.assertEqual(check.returncode, 0, check.stderr)
+        self.assertIn(b"\ntriangles: 14\n", check.stdout)  # and the ground's two
+
+
+def scene_triangles(path):
+    """[(3 positions, 3 normals)] of a scene file as --save-scene writes it."""
+    tokens = read(path).decode().split()
+    result, i = [], 0
+    while i < len(tokens):
+        if tokens[i] == "triangle":
+            corners = []
+            for k in range(3):
+                at = i + 1 + 18 * k
+                corners.append((tuple(float(t) for t in tokens[at + 1:at + 4]),
+                                tuple(float(t) for t in tokens[at + 5:at + 8])))
+            result.append(corners)
+            i += 55
+        else:
+            i += 1
+    return result
+
+
+def pixels(png):
+    """(width, height, rows of (r, g, b)) of a PNG Raytracer wrote."""
+    return read_png(png)
+
+
+class WhatAModelIsGiven(unittest.TestCase):
+    def test_the_framing_fills_80_percent_of_the_view(self):
+        # A cube seen face on: its front corners are the outermost, symmetric about the
+        # centre of the view, so the silhouette is 80% of the height (the 4:3 width is
+        # not the limit for a square).
+        path = write_model("framing", CUBE)
+        png = path + ".png"
+        drawn = run(RAYTRACER, path, "--no-ground", "-o", png)
+        self.assertEqual(drawn.returncode, 0, drawn.stderr)
+        width, height, rows = pixels(png)
+        covered = [y for y in range(height) if any(p != (255, 255, 255) for p in rows[y])]
+        share = (covered[-1] - covered[0] + 1) / height
+        self.assertAlmostEqual(share, 0.8, delta=2 / height)
+
+    def test_the_ground_shows_the_models_shadow(self):
+        path = write_model("shadow", CUBE)
+        scene = path + ".scene"
+        self.assertEqual(run(RAYTRACER, path, "--save-scene", scene).returncode, 0)
+        # The same lights and ground without the cube: the ground alone, unshadowed.
+        lines = read(scene).decode().split("\n")
+        lights = lines[2:2 + 3 * 3]
+        ground = lines[2 + 3 * 3 + 12 * 16:]
+        bare = path + ".bare.scene"
+        with open(bare, "w") as handle:
+            handle.write("\n".join(["5", lines[1]] + lights + ground))
+        with_model, without = path + ".png", path + ".bare.png"
+        for source, png in ((scene, with_model), (bare, without)):
+            drawn = run(RAYTRACER, source, "-o", png, "--width", "160", "--height", "120")
+            self.assertEqual(drawn.returncode, 0, drawn.stderr)
+        _w, _h, a = pixels(with_model)
+        _w, _h, b = pixels(without)
+        # Below the cube's silhouette, ground pixels the cube darkens: its shadow.
+        darker = sum(1 for y in range(120) for x in range(160)
+                     if a[y][x] != (255, 255, 255) and b[y][x] != (255, 255, 255) and sum(a[y][x]) + 30 < sum(b[y][x])
+                     and y > 60)
+        self.assertGreater(darker, 100)
+
+    def test_crease_0_gives_flat_normals_and_180_smooth_ones(self):
+        path = write_model("crease", prism(8))
+        for crease, flat in (("0", True), ("60", False), ("180", False)):
+            with self.subTest(crease=crease):
+                scene = path + ".%s.scene" % crease
+                self.assertEqual(run(RAYTRACER, path, "--crease", crease, "--up", "z", "--no-ground",
+                                     "--save-scene", scene).returncode, 0)
+                triangles = scene_triangles(scene)
+                corners_alike = all(t[0][1] == t[1][1] == t[2][1] for t in triangles)
+                self.assertEqual(corners_alike, flat)
+        # At 60 degrees the sides (45 apart) are smooth but the rims (90) stay sharp: the
+        # caps' corners all point straight up or down (the prism stands upright, --up z).
+        triangles = scene_triangles(path + ".60.scene")
+        caps = [t for t in triangles if len({c[0][1] for c in t}) == 1]
+        self.assertTrue(caps)
+        for t in caps:
+            for _position, normal in t:
+                self.assertEqual((normal[0], normal[2]), (0.0, 0.0))
+
+    def test_a_model_renders_as_the_reference_renders_it(self):
+        # The double-precision CPU reference builds the model by the same rules for the same
+        # view (here not 4:3, so the framing's aspect counts), and the images agree as the
+        # classic scenes do (99.9% of the pixels within 2 levels).
+        path = write_model("conformance", prism(8))
+        size = ["--width", "200", "--height", "120", "--fov", "50"]
+        ours, reference = path + ".png", path + ".reference.png"
+        drawn = run(RAYTRACER, path, "--up", "z", "-o", ours, "--validate", *size)
+        self.assertEqual(drawn.returncode, 0, drawn.stderr)
+        # The reference has no --up: give it the scene Raytracer built.
+        scene = path + ".scene"
+        self.assertEqual(run(RAYTRACER, path, "--up", "z", "--save-scene", scene, *size).returncode, 0)
+        drawn = run(REFERENCE, scene, "-o", reference, *size)
+        self.assertEqual(drawn.returncode, 0, drawn.stderr)
+        compared = run(IMAGE_DIFF, ours, reference, "--tolerance", "2", "--min-match", "99.9")
+        self.assertEqual(compared.returncode, 0, compared.stdout + compared.stderr)
+        # And the reference reading the OBJ file itself builds the same scene for that view.
+        direct = path + ".reference-direct.png"
+        plain = run(RAYTRACER, path, "-o", path + ".plain.png", "--validate", *size)
+        self.assertEqual(plain.returncode, 0, plain.stderr)
+        self.assertEqual(run(REFERENCE, path, "-o", direct, *size).returncode, 0)
+        compared = run(IMAGE_DIFF, path + ".plain.png", direct, "--tolerance", "2", "--min-match", "99.9")
+        self.assertEqual(compared.returncode, 0, compared.stdout + compared.stderr)
+
+    def test_up_z_stands_a_z_up_model_upright(self):
+        path = write_model("z_up", prism(8))  # 2 tall along z, 1 across
+        for up, tallest in (("y", 2), ("z", 1)):
+            with self.subTest(up=up):
+                scene = path + ".%s.scene" % up
+                self.assertEqual(run(RAYTRACER, path, "--up", up, "--no-ground", "--save-scene", scene).returncode, 0)
+                positions = [c[0] for t in scene_triangles(scene) for c in t]
+                extents = [max(p[a] for p in positions) - min(p[a] for p in positions) for a in range(3)]
+                self.assertEqual(extents.index(max(extents)), tallest)
+
+
+if __name__ == "__main__":
+    if None in (RAYTRACER, TOOL, OUTPUT, REFERENCE, IMAGE_DIFF):
+        sys.exit(__doc__)
+    os.makedirs(OUTPUT, exist_ok=True)
+    unittest.main(argv=[sys.argv[0], "-v"])

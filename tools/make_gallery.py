@@ -1,0 +1,152 @@
+#!/usr/bin/env python3
+"""Make the models of docs/gallery.md and render them as a user would.
+
+    python3 tools/make_gallery.py --raytracer build/Raytracer --models out/gallery \\
+        --images docs/images
+
+Writes three Wavefront OBJ models with their MTL materials into --models, all made
+here from formulas (none copied from elsewhere): a (3,2) torus-knot tube of quads
+(knot.obj), an icosahedron split once into 80 faces (gem.obj, shown with flat
+facets) and a vase turned from a profile, written z-up as CAD and Blender models
+often are (vase.obj). Then renders each with Raytracer, straight from the OBJ file
+(framed, on a floor, lit: docs/models.md), to --images/gallery-NAME.png, and prints
+each command. Deterministic; standard library only.
+"""
+
+import argparse
+import math
+import os
+import subprocess
+import sys
+
+FMT = "%.6f"
+
+
+def write_model(folder, name, positions, faces, material):
+    """NAME.obj (positions, faces of 1-based indices) and NAME.mtl with one material."""
+    with open(os.path.join(folder, name + ".mtl"), "w") as out:
+        out.write("newmtl %s\nKd %s\nKs %s\nNs %g\n" % (
+            name, " ".join(FMT % c for c in material["Kd"]), " ".join(FMT % c for c in material["Ks"]),
+            material["Ns"]))
+    with open(os.path.join(folder, name + ".obj"), "w") as out:
+        out.write("# made by tools/make_gallery.py\nmtllib %s.mtl\n" % name)
+        for p in positions:
+            out.write("v %s\n" % " ".join(FMT % c for c in p))
+        out.write("usemtl %s\n" % name)
+        for face in faces:
+            out.write("f %s\n" % " ".join(str(i + 1) for i in face))
+
+
+def knot(segments=240, sides=16, radius=0.35):
+    """A (3,2) torus knot's tube: a ring of `sides` corners around each point of the
+    curve, joined into quads."""
+    def curve(t):
+        r = 2.0 + math.cos(3.0 * t)
+        return (r * math.cos(2.0 * t), r * math.sin(2.0 * t), -math.sin(3.0 * t))
+
+    positions = []
+    for i in range(segments):
+        t = 2.0 * math.pi * i / segments
+        p, q = curve(t), curve(t + 1e-4)
+        tangent = [q[k] - p[k] for k in range(3)]
+        n = math.sqrt(sum(c * c for c in tangent))
+        tangent = [c / n for c in tangent]
+        # A frame around the tangent: the normal towards the z axis, the binormal across.
+        up = (0.0, 0.0, 1.0)
+        b = [tangent[1] * up[2] - tangent[2] * up[1], tangent[2] * up[0] - tangent[0] * up[2],
+             tangent[0] * up[1] - tangent[1] * up[0]]
+        nb = math.sqrt(sum(c * c for c in b))
+        b = [c / nb for c in b]
+        normal = [b[1] * tangent[2] - b[2] * tangent[1], b[2] * tangent[0] - b[0] * tangent[2],
+                  b[0] * tangent[1] - b[1] * tangent[0]]
+        for j in range(sides):
+            a = 2.0 * math.pi * j / sides
+            positions.append(tuple(p[k] + radius * (math.cos(a) * normal[k] + math.sin(a) * b[k]) for k in range(3)))
+    faces = []
+    for i in range(segments):
+        for j in range(sides):
+            a, b = i * sides + j, i * sides + (j + 1) % sides
+            c, d = ((i + 1) % segments) * sides + (j + 1) % sides, ((i + 1) % segments) * sides + j
+            faces.append((a, b, c, d))
+    return positions, faces
+
+
+def gem():
+    """An icosahedron with each face split into four, pushed out onto the sphere."""
+    g = (1.0 + math.sqrt(5.0)) / 2.0
+    corners = [(-1, g, 0), (1, g, 0), (-1, -g, 0), (1, -g, 0), (0, -1, g), (0, 1, g), (0, -1, -g), (0, 1, -g),
+               (g, 0, -1), (g, 0, 1), (-g, 0, -1), (-g, 0, 1)]
+    faces = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2),
+             (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5), (2, 4, 11),
+             (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    positions = [tuple(c / math.sqrt(1 + g * g) for c in p) for p in corners]
+    middle = {}
+
+    def midpoint(a, b):
+        key = (min(a, b), max(a, b))
+        if key not in middle:
+            m = [(positions[a][k] + positions[b][k]) / 2.0 for k in range(3)]
+            n = math.sqrt(sum(c * c for c in m))
+            positions.append(tuple(c / n for c in m))
+            middle[key] = len(positions) - 1
+        return middle[key]
+
+    split = []
+    for a, b, c in faces:
+        ab, bc, ca = midpoint(a, b), midpoint(b, c), midpoint(c, a)
+        split += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
+    return positions, split
+
+
+def vase(rings=48, sides=48):
+    """A surface of revolution about z (so the model is z-up), from a profile of radius
+    against height, open at the top, closed by a fan at the bottom."""
+    positions, faces = [], []
+    for i in range(rings + 1):
+        h = 2.0 * i / rings
+        r = 0.32 + 0.2 * math.sin(math.pi * h * 0.6) + 0.06 * math.cos(math.pi * h * 1.5)
+        for j in range(sides):
+            a = 2.0 * math.pi * j / sides
+            positions.append((r * math.cos(a), r * math.sin(a), h))
+    for i in range(rings):
+        for j in range(sides):
+            a, b = i * sides + j, i * sides + (j + 1) % sides
+            faces.append((a, b, b + sides, a + sides))
+    faces.append(tuple(reversed(range(sides))))  # the base, one polygon
+    return positions, faces
+
+
+MODELS = {
+    "knot": (knot, {"Kd": (0.8, 0.42, 0.2), "Ks": (0.3, 0.3, 0.3), "Ns": 60}, []),
+    "gem": (gem, {"Kd": (0.15, 0.3, 0.8), "Ks": (0.45, 0.45, 0.45), "Ns": 200}, ["--crease", "10"]),
+    "vase": (vase, {"Kd": (0.9, 0.88, 0.8), "Ks": (0.15, 0.15, 0.15), "Ns": 40}, ["--up", "z"]),
+}
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description="Make the gallery's models and render them with Raytracer.")
+    parser.add_argument("--raytracer", required=True, help="the Raytracer program")
+    parser.add_argument("--models", required=True, help="the folder for the OBJ and MTL files")
+    parser.add_argument("--images", required=True, help="the folder for gallery-NAME.png")
+    parser.add_argument("--width", type=int, default=480)
+    parser.add_argument("--height", type=int, default=360)
+    parser.add_argument("--spp", type=int, default=4)
+    args = parser.parse_args(argv)
+    os.makedirs(args.models, exist_ok=True)
+    os.makedirs(args.images, exist_ok=True)
+    for name, (make, material, options) in MODELS.items():
+        positions, faces = make()
+        write_model(args.models, name, positions, faces, material)
+        command = [args.raytracer, os.path.join(args.models, name + ".obj"), *options, "--width", str(args.width),
+                   "--height", str(args.height), "--spp", str(args.spp), "-o",
+                   os.path.join(args.images, "gallery-%s.png" % name)]
+        print(" ".join(command))
+        done = subprocess.run(command, capture_output=True, text=True)
+        if done.returncode != 0 or not os.path.isfile(command[-1]):
+            print("make_gallery: %s failed (%d):\n%s" % (name, done.returncode, done.stderr), file=sys.stderr)
+            return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
