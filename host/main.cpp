@@ -1,8 +1,10 @@
 // Raytracer: arguments to a mode (help, headless PNG, benchmark, window), inside
 // one try/catch that turns every failure into a message and an exit status.
 #include "base/scope_guard.h"
+#include "batch.h"
 #include "bench.h"
 #include "cli/options.h"
+#include "cli/output_pattern.h"
 #include "cli/render_settings.h"
 #include "cli/version.h"
 #include "gpu/cpu_driver.h"
@@ -72,6 +74,8 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
     settings.floatOutput = writing && imageFormatOf(options.outputPath) != ImageFormat::Png;
     createRenderer(renderer, context, scene, settings);
     createHeadlessTarget(target, context, renderer, options.regionSide);
+    if (options.cropGiven)
+        target.crop = {options.crop.x, options.crop.y, options.crop.z, options.crop.w};
     if (options.benchFrames > 0)
         std::cout << runBenchmark(context, renderer, target, options, startup) << std::endl;
     else if (writing)
@@ -106,6 +110,20 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
                   << options.dumpShadersTo.string() << '\n';
         if (options.scenePath.empty()) return kSuccess;
     }
+    // --validate: any message of the layer fails the run, whatever else it did.
+    auto validated = [&](int status) {
+        if (options.validate && validationMessageCount() > 0) {
+            std::cerr << "error: the validation layer printed " << validationMessageCount()
+                      << " message(s)\n";
+            return int(kValidationFailure);
+        }
+        return status;
+    };
+    if (isBatch(options)) return validated(runBatch(options) > 0 ? kSceneError : kSuccess);
+    // One image: a pattern's {name} is the scene's stem, {frame} 0.
+    if (!options.outputPath.empty())
+        options.outputPath =
+            expandOutputPattern(options.outputPath.string(), options.scenePath.stem().string(), 0);
     const auto parseStart = std::chrono::steady_clock::now();
     Scene scene = loadScene(options.scenePath);
     startup.parseMs =
@@ -134,12 +152,7 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
     if (headless && options.benchFrames == 0 && !options.outputPath.empty())
         std::cerr << "Wrote " << options.outputPath.string() << '\n';
 
-    if (options.validate && validationMessageCount() > 0) {
-        std::cerr << "error: the validation layer printed " << validationMessageCount()
-                  << " message(s)\n";
-        return kValidationFailure;
-    }
-    return kSuccess;
+    return validated(kSuccess);
 }
 
 } // namespace
