@@ -5,6 +5,7 @@
 #include "cli/command_line.h"
 #include "cli/option_suggestion.h"
 #include "cli/options.h"
+#include "cli/output_pattern.h"
 #include "shared.h"
 
 #include <gtest/gtest.h>
@@ -309,4 +310,29 @@ TEST(CommandLine, SuggestedOptionsAreRealOptions) {
         const std::string error = usageErrorOf({"x.scene", option, "1"});
         EXPECT_EQ(error.find("unknown option"), std::string::npos) << option << ": " << error;
     }
+}
+
+TEST(OutputPattern, FieldsAreReplaced) {
+    EXPECT_EQ(expandOutputPattern("out/{name}-{frame}.png", "table", 7), "out/table-7.png");
+    EXPECT_EQ(expandOutputPattern("f-{frame:04}.png", "x", 7), "f-0007.png");
+    EXPECT_EQ(expandOutputPattern("f-{frame:02}.png", "x", 12345), "f-12345.png");
+    EXPECT_EQ(expandOutputPattern("{name}/{name}.exr", "a b", 0), "a b/a b.exr");
+    EXPECT_EQ(expandOutputPattern("plain.png", "x", 3), "plain.png");
+    EXPECT_TRUE(outputPatternHas("a{frame:09}.png", "frame"));
+    EXPECT_FALSE(outputPatternHas("a{frame:09}.png", "name"));
+    EXPECT_EQ(outputPatternProblem("a{name.png"), "a '{' is not closed");
+    EXPECT_EQ(outputPatternProblem("a{frame:0}.png"),
+              "unknown field {frame:0} (known: {name}, {frame}, {frame:04})");
+    EXPECT_EQ(outputPatternProblem("a{}.png"),
+              "unknown field {} (known: {name}, {frame}, {frame:04})");
+}
+
+TEST(OutputPattern, AFolderStandsForNamePng) {
+    EXPECT_EQ(parse({"a.scene", "b.scene", "-o", "out/"}).outputPath, "out/{name}.png");
+    EXPECT_EQ(parse({"a.scene", "-o", "out/", "--turntable", "3"}).outputPath,
+              "out/{name}-{frame:04}.png");
+    const std::filesystem::path existing = std::filesystem::path(TEST_OUTPUT_DIR) / "command-line";
+    std::filesystem::create_directories(existing);
+    EXPECT_EQ(parse({"a.scene", "b.scene", "-o", existing.string()}).outputPath,
+              existing / "{name}.png");
 }
