@@ -291,7 +291,7 @@ TEST(CommandLine, UnknownOptionNamesTheNearMisses) {
         {"--thread", "; did you mean --threads?"}, // the plural forgotten
         {"--Width", "; did you mean --width?"},    // case
         {"--accell", "; did you mean --accel?"},
-        {"--camera", "; did you mean --camera-pos, --camera-target or --camera-up?"}, // prefix
+        {"--camera", "; did you mean --camera-path, --camera-pos or --camera-target?"}, // prefix
         {"--dump", "; did you mean --dump-shaders?"},
         {"--frobnicate", ""}, // nothing close
         {"--x", ""},          // too short to mean one
