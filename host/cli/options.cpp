@@ -127,8 +127,13 @@ glm::uvec2 parseFrameRange(const std::string& flag, const std::string& text) {
 void checkBatch(Options& options) {
     const bool frames = options.turntableFrames > 0 || !options.cameraPath.empty();
     const std::string output = options.outputPath.string();
-    if (!options.outputPath.empty() && isOutputFolder(options.outputPath))
+    // An existing folder is the batch's folder; for one image it stays the error it was
+    // (a folder where a file name was meant), unless written as a folder, out/.
+    if (!output.empty() && (output.back() == '/' || (isBatch(options) && isOutputFolder(output))))
         options.outputPath = folderOutputPattern(options.outputPath, frames);
+    else if (!output.empty() && isOutputFolder(output) && !imageFormatOf(output))
+        throw UsageError("-o " + output + ": the output must be a file name ending in " +
+                         kKnownImageExtensions);
     if (std::string problem = outputPatternProblem(options.outputPath.string()); !problem.empty())
         throw UsageError("-o " + output + ": " + problem);
     if (!isBatch(options)) {

@@ -1,6 +1,7 @@
 // -o as a pattern for many images (docs/batches.md): {name} is the scene file's stem,
 // {frame} the frame number and {frame:04} the same zero-padded to 4 digits (any width from
-// 1 to 9). A folder (an existing one, or a path ending in '/') stands for {name}.png in it.
+// 1 to 9). A folder (a path ending in '/', or for a batch an existing folder) stands for
+// {name}.png in it.
 #pragma once
 
 #include <cstdint>

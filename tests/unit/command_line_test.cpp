@@ -335,4 +335,15 @@ TEST(OutputPattern, AFolderStandsForNamePng) {
     std::filesystem::create_directories(existing);
     EXPECT_EQ(parse({"a.scene", "b.scene", "-o", existing.string()}).outputPath,
               existing / "{name}.png");
+    // For one image an existing folder is not taken for one: a file name was meant.
+    try {
+        parse({"a.scene", "-o", existing.string()});
+        ADD_FAILURE() << "no usage error";
+    } catch (const UsageError& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  "-o " + existing.string() +
+                      ": the output must be a file name ending in .png, .pfm or .exr");
+    }
+    EXPECT_EQ(parse({"a.scene", "-o", existing.string() + "/"}).outputPath,
+              existing.string() + "/{name}.png");
 }
