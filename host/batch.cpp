@@ -1,5 +1,7 @@
 #include "batch.h"
 
+#include "base/notes.h"
+#include "base/output_format.h"
 #include "base/scope_guard.h"
 #include "cli/output_pattern.h"
 #include "cli/render_settings.h"
@@ -51,7 +53,7 @@ void renderScene(const Options& options, const Context& context, KernelCache& ke
                  const Scene& scene, const std::string& name,
                  const std::vector<FrameView>& frames) {
     RenderSettings settings = renderSettingsFrom(options);
-    settings.floatOutput = imageFormatOf(options.outputPath) != ImageFormat::Png;
+    settings.floatOutput = holdsFloats(*outputFormatOf(options.outputPath));
     Renderer renderer;
     HeadlessTarget target;
     ScopeExit teardown([&] {
@@ -70,13 +72,15 @@ void renderScene(const Options& options, const Context& context, KernelCache& ke
         setCamera(renderer, frame.camera);
         setFieldOfView(renderer, frame.fovDegrees);
         renderHeadlessFrame(target, context, renderer,
-                            options.progress ? ProgressMode::Always : ProgressMode::Auto);
+                            options.quiet      ? ProgressMode::Off
+                            : options.progress ? ProgressMode::Always
+                                               : ProgressMode::Auto);
         throwIfInterrupted();
         if (settings.floatOutput)
             writeFloatImage(output, readHeadlessFloatImage(target, renderer));
         else
-            writePng(output, readHeadlessImage(target, renderer));
-        std::cerr << "Wrote " << output.string() << '\n';
+            writeImage8(output, readHeadlessImage(target, renderer), int(options.jpegQuality));
+        note("Wrote %s\n", output.c_str());
     }
 }
 
@@ -120,13 +124,14 @@ int runBatch(const Options& options) {
             continue;
         }
         for (const std::string& line : summarisedWarnings(scene.warnings))
-            std::cerr << line << '\n';
+            note("%s\n", line.c_str());
         const std::vector<FrameView> frames = framesOf(options, scene, path);
         renderScene(options, context, kernels, scene, scenePath.stem().string(), frames);
         images += std::uint32_t(frames.size());
     }
-    std::cerr << "Batch: " << images << " image(s) of " << scenes.size() - failed << " scene(s)";
-    if (failed > 0) std::cerr << ", " << failed << " scene(s) not loaded";
-    std::cerr << "; kernels compiled " << kernels.compiled << ", reused " << kernels.reused << '\n';
+    const std::string notLoaded =
+        failed > 0 ? ", " + std::to_string(failed) + " scene(s) not loaded" : "";
+    note("Batch: %u image(s) of %zu scene(s)%s; kernels compiled %u, reused %u\n", images,
+         scenes.size() - std::size_t(failed), notLoaded.c_str(), kernels.compiled, kernels.reused);
     return failed;
 }

@@ -1,5 +1,7 @@
 // Raytracer: arguments to a mode (help, headless PNG, benchmark, window), inside
 // one try/catch that turns every failure into a message and an exit status.
+#include "base/notes.h"
+#include "base/output_format.h"
 #include "base/scope_guard.h"
 #include "batch.h"
 #include "bench.h"
@@ -8,6 +10,7 @@
 #include "cli/render_settings.h"
 #include "cli/version.h"
 #include "gpu/cpu_driver.h"
+#include "gpu/device_list.h"
 #include "gpu/image_limits.h"
 #include "render/headless.h"
 #include "render/interrupt.h"
@@ -20,6 +23,7 @@
 
 #include <chrono>
 #include <iostream>
+#include <unistd.h>
 
 namespace {
 
@@ -46,16 +50,29 @@ void printPixelStory(const Options& options, Renderer& renderer, const Context& 
     std::cout << pixelStoryJson(story, renderer.sources, header) << std::flush;
 }
 
-// Renders headless: one frame to options.outputPath (PNG, or PFM/EXR floats), a benchmark
-// (with -o, its last frame written too), or (--pixel without -o) only the story of one pixel.
+// --list-devices: every device on stdout, numbered as --device counts them.
+void listDevices(const Options& options) {
+    Context context;
+    ScopeExit teardown([&] { destroyContext(context); });
+    createInstance(context, {}, options.validate);
+    std::cout << deviceListing(context.instance);
+}
+
+// Renders headless: one frame to options.outputPath (PNG, JPEG, PPM, or PFM/EXR floats; "-":
+// a PNG on stdout), a benchmark (with -o, its last frame written too), or (--pixel without
+// -o) only the story of one pixel.
 // Before any work, the output file is known to be writable (its .tmp exists) and the
 // image to fit the device; a failure or Ctrl-C afterwards removes the .tmp again.
 void runHeadless(const Options& options, const Scene& scene, const StartupTimes& startup) {
     installInterruptHandlers();
     const bool writing = !options.outputPath.empty();
-    if (writing) reservePngOutput(options.outputPath);
+    const bool toFile = writing && !isStandardOutput(options.outputPath);
+    if (writing && !toFile && isatty(STDOUT_FILENO) == 1)
+        throw std::runtime_error("-o - writes a PNG to stdout, which is a terminal; redirect it "
+                                 "to a file or a pipe");
+    if (toFile) reservePngOutput(options.outputPath);
     OnFailure removeOutput([&] {
-        if (writing) releasePngOutput(options.outputPath);
+        if (toFile) releasePngOutput(options.outputPath);
     });
     Context context;
     Renderer renderer;
@@ -71,7 +88,7 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
     checkImageFits(imageLimitsOf(context), options.width, options.height, true);
     RenderSettings settings = renderSettingsFrom(options);
     // -o out.pfm|out.exr: the averages before the 8-bit rounding (docs/accuracy.md).
-    settings.floatOutput = writing && imageFormatOf(options.outputPath) != ImageFormat::Png;
+    settings.floatOutput = writing && holdsFloats(*outputFormatOf(options.outputPath));
     createRenderer(renderer, context, scene, settings);
     createHeadlessTarget(target, context, renderer, options.regionSide);
     if (options.cropGiven)
@@ -80,13 +97,16 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
         std::cout << runBenchmark(context, renderer, target, options, startup) << std::endl;
     else if (writing)
         renderHeadlessFrame(target, context, renderer,
-                            options.progress ? ProgressMode::Always : ProgressMode::Auto);
+                            options.quiet      ? ProgressMode::Off
+                            : options.progress ? ProgressMode::Always
+                                               : ProgressMode::Auto);
     if (writing) { // the frame just rendered, or the benchmark's last
         throwIfInterrupted();
         if (settings.floatOutput)
             writeFloatImage(options.outputPath, readHeadlessFloatImage(target, renderer));
         else
-            writePng(options.outputPath, readHeadlessImage(target, renderer));
+            writeImage8(options.outputPath, readHeadlessImage(target, renderer),
+                        int(options.jpegQuality));
     }
     if (options.pixelGiven) printPixelStory(options, renderer, context, writing);
 }
@@ -94,6 +114,7 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
 int run(int argc, char** argv, std::chrono::steady_clock::time_point processStart) {
     StartupTimes startup{processStart, 0.0};
     Options options = parseOptions(argc, argv);
+    setQuiet(options.quiet);
     requestCpuDriverThreads(options.cpuThreads); // before any Vulkan call reads it
     if (options.showHelp) {
         std::cout << usageText();
@@ -103,11 +124,14 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
         std::cout << versionText();
         return kSuccess;
     }
+    if (options.listDevices) {
+        listDevices(options);
+        return kSuccess;
+    }
     if (!options.dumpShadersTo.empty()) {
         writeEmbeddedShaders(options.dumpShadersTo);
-        std::cerr << "Wrote the shader sources to " << options.dumpShadersTo.string()
-                  << "; edit them there and run with --shader-dir "
-                  << options.dumpShadersTo.string() << '\n';
+        note("Wrote the shader sources to %s; edit them there and run with --shader-dir %s\n",
+             options.dumpShadersTo.c_str(), options.dumpShadersTo.c_str());
         if (options.scenePath.empty()) return kSuccess;
     }
     // --validate: any message of the layer fails the run, whatever else it did.
@@ -130,7 +154,7 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - parseStart)
             .count();
     for (const std::string& line : summarisedWarnings(scene.warnings))
-        std::cerr << line << '\n';
+        note("%s\n", line.c_str());
     if (options.checkOnly) { // the scene parsed: it is valid; no Vulkan from here either
         std::cout << options.scenePath.string() << ": valid\n" << sceneSummary(scene);
         return kSuccess;
@@ -144,13 +168,20 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
         if (options.benchWindowFrames > 0)
             throw std::runtime_error("--bench-window needs a display: " +
                                      windowUnavailableReason());
-        options.outputPath = options.scenePath.stem().string() + ".png";
-        std::cerr << "No display: rendering headless to " << options.outputPath.string() << '\n';
+        // Never over an earlier render: test1.png, else test1-1.png, test1-2.png, ...
+        const std::filesystem::path wanted = options.scenePath.stem().string() + ".png";
+        options.outputPath = firstUnusedName(wanted);
+        if (options.outputPath == wanted)
+            note("No display: rendering headless to %s\n", wanted.c_str());
+        else
+            note("No display: rendering headless to %s (%s exists and is kept)\n",
+                 options.outputPath.c_str(), wanted.c_str());
         headless = true;
     }
     if (headless) runHeadless(options, scene, startup);
     if (headless && options.benchFrames == 0 && !options.outputPath.empty())
-        std::cerr << "Wrote " << options.outputPath.string() << '\n';
+        note("Wrote %s\n", isStandardOutput(options.outputPath) ? "the PNG to stdout"
+                                                                : options.outputPath.c_str());
 
     return validated(kSuccess);
 }

@@ -16,6 +16,21 @@ struct Image8 {
 // Throws std::runtime_error "PATH: REASON" if it can't.
 Image8 readPng(const std::filesystem::path& path);
 
+// Reads a PNG, a JPEG or a binary PPM (stb tells them by their first bytes) as RGBA8.
+// Throws std::runtime_error "PATH: REASON" if it can't.
+Image8 readImage8(const std::filesystem::path& path);
+
+// The bytes of a file of each 8-bit format (PATH only names the file in an error): PNG;
+// baseline JPEG at quality 1 to 100 (stb); binary PPM ("P6", 8-bit RGB). Alpha is dropped
+// by JPEG and PPM; the renderer's is always 255.
+std::vector<std::uint8_t> encodePng(const std::filesystem::path& path, const Image8& image);
+std::vector<std::uint8_t> encodeJpeg(const std::filesystem::path& path, const Image8& image,
+                                     int quality);
+std::vector<std::uint8_t> encodePpm(const std::filesystem::path& path, const Image8& image);
+
+// Writes all of bytes to stdout (-o -), every write checked. Throws std::runtime_error.
+void writeStandardOutput(const std::vector<std::uint8_t>& bytes);
+
 // Writes "PATH.tmp" and renames it over PATH, so a failed write never leaves a
 // truncated PNG behind. Throws std::runtime_error "PATH: REASON" on failure.
 void writePng(const std::filesystem::path& path, const Image8& image);

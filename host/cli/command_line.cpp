@@ -57,6 +57,7 @@ std::string commandLine(const Options& options) {
     for (const std::filesystem::path& scene : options.moreScenes)
         command += " " + shellQuoted(scene.string());
     addPath("-o", options.outputPath);
+    addCount("--quality", options.jpegQuality, defaults.jpegQuality);
     add("--width", std::to_string(options.width));
     add("--height", std::to_string(options.height));
     if (options.samplesGiven || options.samplesPerPixel != defaults.samplesPerPixel)
@@ -102,6 +103,7 @@ std::string commandLine(const Options& options) {
     addSwitch("--validate", options.validate);
     addSwitch("--no-cache", !options.useCache);
     addSwitch("--progress", options.progress);
+    addSwitch("--quiet", options.quiet);
     addSwitch("--window", options.forceWindow);
     addSwitch("--redraw-continuously", options.redrawContinuously);
     addSwitch("--general-kernel", options.generalKernel);
@@ -109,6 +111,7 @@ std::string commandLine(const Options& options) {
     addSwitch("--help", options.showHelp);
     addSwitch("--version", options.showVersion);
     addSwitch("--check", options.checkOnly);
+    addSwitch("--list-devices", options.listDevices);
     return command;
 }
 

@@ -1,6 +1,6 @@
 #include "cli/options.h"
 
-#include "base/float_image.h"
+#include "base/output_format.h"
 #include "cli/option_suggestion.h"
 #include "cli/output_pattern.h"
 #include "cli/window_keys.h"
@@ -131,9 +131,9 @@ void checkBatch(Options& options) {
     // (a folder where a file name was meant), unless written as a folder, out/.
     if (!output.empty() && (output.back() == '/' || (isBatch(options) && isOutputFolder(output))))
         options.outputPath = folderOutputPattern(options.outputPath, frames);
-    else if (!output.empty() && isOutputFolder(output) && !imageFormatOf(output))
+    else if (!output.empty() && isOutputFolder(output) && !outputFormatOf(output))
         throw UsageError("-o " + output + ": the output must be a file name ending in " +
-                         kKnownImageExtensions);
+                         kOutputNames);
     if (std::string problem = outputPatternProblem(options.outputPath.string()); !problem.empty())
         throw UsageError("-o " + output + ": " + problem);
     if (!isBatch(options)) {
@@ -150,6 +150,9 @@ void checkBatch(Options& options) {
                          "image after another, and cannot be combined with --bench, "
                          "--bench-window, --pixel, --check or --window");
     const std::string pattern = options.outputPath.string();
+    if (isStandardOutput(options.outputPath))
+        throw UsageError("-o - writes one PNG to stdout; several scenes, --turntable and "
+                         "--camera-path write files: give -o a pattern or a folder");
     if (!options.moreScenes.empty() && (pattern.empty() || !outputPatternHas(pattern, "name")))
         throw UsageError(
             "several scenes would all write " + (pattern.empty() ? "no file" : pattern) +
@@ -232,11 +235,14 @@ const ChoiceNames<Acceleration>& accelerationNames() {
 std::string usageText() {
     return "Usage: Raytracer SCENE [options]\n"
            "       Raytracer SCENE... -o 'out/{name}.png' [options]\n"
-           "Renders SCENE in a window (headless to a PNG when there is no display); several\n"
+           "Renders SCENE in a window (headless to a PNG when there is no display: STEM.png,\n"
+           "or STEM-1.png, STEM-2.png, ... beside an earlier one, which is kept). Several\n"
            "scenes, --turntable and --camera-path render a batch headless (docs/batches.md).\n"
            "\n"
-           "  -o, --output FILE     render headless and write FILE: .png (8-bit), or .pfm or\n"
-           "                        .exr (float: each pixel before the 8-bit rounding)\n"
+           "  -o, --output FILE     render headless and write FILE: .png, .jpg/.jpeg or .ppm\n"
+           "                        (8-bit), or .pfm or .exr (float: each pixel before the\n"
+           "                        8-bit rounding); -o - writes a PNG to stdout\n"
+           "  --quality Q           JPEG quality, 1 to 100 (default 90); a .jpg output only\n"
            "  --width W             image width in pixels (default 640)\n"
            "  --height H            image height in pixels (default 480)\n"
            "  --spp N               samples per pixel (default 1: the pixel centre)\n"
@@ -274,6 +280,8 @@ std::string usageText() {
            "  -o patterns           {name}: the scene file's stem; {frame}, {frame:04}: the frame\n"
            "                        number (zero-padded); a folder out/ is out/{name}.png\n"
            "  --device NAME|INDEX   use this Vulkan device (default: a real GPU before a CPU one)\n"
+           "  --list-devices        print every Vulkan device (index, name, type, driver, fp64,\n"
+           "                        limits) and exit; --device takes the index or the name\n"
            "  --threads N           worker threads of a CPU device (lavapipe; default: one per\n"
            "                        core)\n"
            "  --accel auto|bvh|none  bounding volume hierarchy, or test every primitive (default\n"
@@ -285,6 +293,7 @@ std::string usageText() {
            "  --no-cache            neither read nor write the shader cache "
            "($XDG_CACHE_HOME/raytracer)\n"
            "  --progress            report progress on stderr even for a render under a second\n"
+           "  --quiet               print no progress, notes or warnings on stderr; errors only\n"
            "  --window              show a window or fail; never fall back to a headless PNG\n"
            "  --shader-dir DIR      compile the kernel from DIR's sources (trace.comp and its\n"
            "                        includes); the window recompiles when one is saved\n"
@@ -305,6 +314,7 @@ std::string usageText() {
 
 Options parseOptions(int argc, const char* const* argv) {
     Options options;
+    bool qualityGiven = false; // --quality 90 names a JPEG output as much as --quality 50 does
     std::vector<std::string> args(argv + 1, argv + argc);
     for (std::size_t i = 0; i < args.size(); ++i) {
         // --opt=value is --opt value: arg is then the name, and value() returns the rest
@@ -331,10 +341,12 @@ Options parseOptions(int argc, const char* const* argv) {
         } else if (arg == "-o" || arg == "--output") {
             options.outputPath = value();
             if (options.outputPath.empty()) throw UsageError(arg + " expects a file name");
-            if (!isOutputFolder(options.outputPath) && !imageFormatOf(options.outputPath))
+            if (!isOutputFolder(options.outputPath) && !outputFormatOf(options.outputPath))
                 throw UsageError(arg + " " + options.outputPath.string() +
-                                 ": the output must be a file name ending in " +
-                                 kKnownImageExtensions);
+                                 ": the output must be a file name ending in " + kOutputNames);
+        } else if (arg == "--quality") {
+            options.jpegQuality = parseCount(arg, value(), 1, 100);
+            qualityGiven = true;
         } else if (arg == "--width") {
             options.width = parseCount(arg, value(), 1, 16384);
         } else if (arg == "--height") {
@@ -383,6 +395,10 @@ Options parseOptions(int argc, const char* const* argv) {
             options.useCache = false;
         } else if (arg == "--region-size") {
             options.regionSide = parseCount(arg, value(), 1, 16384);
+        } else if (arg == "--list-devices") {
+            options.listDevices = true;
+        } else if (arg == "--quiet") {
+            options.quiet = true;
         } else if (arg == "--progress") {
             options.progress = true;
         } else if (arg == "--window") {
@@ -427,7 +443,7 @@ Options parseOptions(int argc, const char* const* argv) {
     if (std::string problem = cameraPoseProblem(options.camera); !problem.empty())
         throw UsageError(problem);
     if (options.scenePath.empty() && !options.showHelp && !options.showVersion &&
-        options.dumpShadersTo.empty())
+        !options.listDevices && options.dumpShadersTo.empty())
         throw UsageError("no scene file given");
     if (options.forceWindow && (!options.outputPath.empty() || options.benchFrames > 0))
         throw UsageError("--window cannot be combined with -o or --bench, which render headless");
@@ -451,6 +467,13 @@ Options parseOptions(int argc, const char* const* argv) {
     if (options.benchWindowFrames > 0 && (!options.outputPath.empty() || options.benchFrames > 0))
         throw UsageError(
             "--bench-window cannot be combined with -o or --bench, which render headless");
+    if (qualityGiven && outputFormatOf(options.outputPath) != OutputFormat::Jpeg)
+        throw UsageError("--quality sets a JPEG's quality and needs -o FILE.jpg or FILE.jpeg" +
+                         (options.outputPath.empty() ? std::string()
+                                                     : ", got -o " + options.outputPath.string()));
+    if (isStandardOutput(options.outputPath) && (options.pixelGiven || options.benchFrames > 0))
+        throw UsageError("-o - writes the PNG to stdout and cannot be combined with --pixel or "
+                         "--bench, which print JSON there");
     if (options.cropGiven) {
         const glm::uvec4 crop = options.crop;
         if (std::uint64_t(crop.x) + crop.z > options.width ||

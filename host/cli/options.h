@@ -2,6 +2,7 @@
 // command_line.h writes it back.
 #pragma once
 
+#include "base/output_format.h"
 #include "render/bvh.h"
 #include "render/kernel_choices.h"
 #include "scene/camera.h"
@@ -16,7 +17,9 @@
 
 struct Options {
     std::filesystem::path scenePath;
-    std::filesystem::path outputPath; // empty: show a window (headless PNG if no display)
+    std::filesystem::path
+        outputPath; // empty: show a window (headless PNG if no display); "-": stdout
+    std::uint32_t jpegQuality = kDefaultJpegQuality; // --quality Q, for a .jpg or .jpeg output only
     std::uint32_t width = 640;
     std::uint32_t height = 480;
     std::uint32_t samplesPerPixel = 1;
@@ -30,6 +33,8 @@ struct Options {
     Acceleration acceleration = Acceleration::Auto; // --accel auto|bvh|none
     bool showHelp = false;
     bool showVersion = false; // --version: the program's, Vulkan's headers' and glslang's
+    bool listDevices = false; // --list-devices: print every Vulkan device and exit
+    bool quiet = false;       // --quiet: no progress, notes or warnings on stderr; errors only
     bool checkOnly = false; // --check: parse and validate the scene, print what it holds; no Vulkan
     bool useCache = true;   // --no-cache: no shader or pipeline cache on disk
     std::uint32_t regionSide =

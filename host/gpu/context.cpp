@@ -1,5 +1,6 @@
 #include "gpu/context.h"
 
+#include "base/notes.h"
 #include "gpu/cpu_driver.h"
 #include "gpu/vk_check.h"
 
@@ -195,7 +196,7 @@ void createInstance(Context& context, const std::vector<const char*>& extensions
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(context.instance, "vkCreateDebugUtilsMessengerEXT"));
         VK_CHECK(create(context.instance, &messengerInfo, nullptr, &context.messenger));
-        std::fprintf(stderr, "Validation: %s on; any message fails the run\n", kValidationLayer);
+        note("Validation: %s on; any message fails the run\n", kValidationLayer);
     }
 }
 
@@ -227,12 +228,12 @@ void createDevice(Context& context, const std::string& deviceRequest, VkSurfaceK
     context.properties = chosen.properties;
     context.queueFamily = chosen.queueFamily;
     vkGetPhysicalDeviceMemoryProperties(chosen.device, &context.memoryProperties);
-    std::fprintf(stderr, "Device: %s (%s)\n", chosen.properties.deviceName,
-                 deviceTypeName(chosen.properties.deviceType));
+    note("Device: %s (%s)\n", chosen.properties.deviceName,
+         deviceTypeName(chosen.properties.deviceType));
     if (requestedCpuDriverThreads() > 0 &&
         chosen.properties.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU)
-        std::fprintf(stderr, "note: --threads %u sets a CPU driver's threads; %s is not one\n",
-                     requestedCpuDriverThreads(), chosen.properties.deviceName);
+        note("note: --threads %u sets a CPU driver's threads; %s is not one\n",
+             requestedCpuDriverThreads(), chosen.properties.deviceName);
     VkPhysicalDeviceFeatures enabledFeatures{};
     if (needFloat64) {
         VkPhysicalDeviceFeatures supported{};

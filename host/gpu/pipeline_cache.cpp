@@ -1,6 +1,7 @@
 #include "gpu/pipeline_cache.h"
 
 #include "base/hash.h"
+#include "base/notes.h"
 #include "gpu/cache_file.h"
 #include "gpu/vk_check.h"
 
@@ -26,12 +27,11 @@ std::string hex(std::uint64_t value) {
 }
 
 void noteIgnored(const std::filesystem::path& file, const std::string& problem) {
-    std::fprintf(stderr, "note: ignoring cache file %s: %s; rebuilding it\n", file.c_str(),
-                 problem.c_str());
+    note("note: ignoring cache file %s: %s; rebuilding it\n", file.c_str(), problem.c_str());
 }
 
 void noteUnwritable(const std::filesystem::path& file, const std::string& problem) {
-    std::fprintf(stderr, "note: cannot update cache file %s: %s\n", file.c_str(), problem.c_str());
+    note("note: cannot update cache file %s: %s\n", file.c_str(), problem.c_str());
 }
 
 // Removes the least recently written files named PREFIX* beyond kFilesKeptPerKind.
@@ -81,8 +81,8 @@ std::filesystem::path userCacheDirectory(bool enabled) {
         candidates.push_back(std::filesystem::path(home) / ".cache" / "raytracer");
     for (const std::filesystem::path& directory : candidates)
         if (isWritableDirectory(directory)) return directory;
-    std::fprintf(stderr, "note: no writable cache folder ($XDG_CACHE_HOME/raytracer or "
-                         "$HOME/.cache/raytracer); shaders are compiled on every start\n");
+    note("note: no writable cache folder ($XDG_CACHE_HOME/raytracer or "
+         "$HOME/.cache/raytracer); shaders are compiled on every start\n");
     return {};
 }
 

@@ -1,5 +1,6 @@
 #include "render/renderer.h"
 
+#include "base/notes.h"
 #include "base/scope_guard.h"
 #include "gpu/vk_check.h"
 #include "shared.h"
@@ -154,7 +155,7 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
         throw std::logic_error("--precision fp64, but the device was created without shaderFloat64 "
                                "(createDevice needFloat64)");
     PackedScene packed = packScene(scene, settings.acceleration, precision);
-    std::fprintf(stderr, "%s\n", accelerationSummary(packed.hierarchy).c_str());
+    note("%s\n", accelerationSummary(packed.hierarchy).c_str());
     renderer.sources = slotSources(scene, packed);
     renderer.specialization = traceSpecialization(packed, settings);
     renderer.scene = uploadScene(context, packed, renderer.specialization.texelReads);
@@ -162,7 +163,7 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
     // The upload turns texel reads off for an array beyond maxTexelBufferElements.
     renderer.specialization.texelReads = renderer.scene.texelReads;
     if (!renderer.scene.storageReadsNote.empty())
-        std::fprintf(stderr, "%s\n", renderer.scene.storageReadsNote.c_str());
+        note("%s\n", renderer.scene.storageReadsNote.c_str());
     const KernelSource source{settings.shaderDirectory, settings.cacheDirectory};
     if (kernels) {
         renderer.pipeline =
@@ -173,9 +174,9 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
     }
     const std::size_t primitives = renderer.scene.sphereCount + renderer.scene.triangleCount;
     if (primitives > 0)
-        std::fprintf(stderr, "Scene memory: %llu bytes, %.1f bytes per primitive\n",
-                     static_cast<unsigned long long>(renderer.scene.bytes),
-                     double(renderer.scene.bytes) / double(primitives));
+        note("Scene memory: %llu bytes, %.1f bytes per primitive\n",
+             static_cast<unsigned long long>(renderer.scene.bytes),
+             double(renderer.scene.bytes) / double(primitives));
     renderer.pixelStory =
         createHostBuffer(context, sizeof(gpu::GpuPixelStory), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     createDescriptors(renderer, context);

@@ -150,12 +150,13 @@ TEST(FloatOutput, UnknownExtensionsAreUsageErrors) {
     const std::filesystem::path dir = freshOutputDir("float_output/extensions");
     const std::string scene =
         (std::filesystem::path(PROJECT_SCENES_DIR) / "showcase.scene").string();
-    for (const char* name : {"out.jpg", "out", "out.png.bak"}) {
+    for (const char* name : {"out.bmp", "out", "out.png.bak"}) {
         const std::string output = (dir / name).string();
         const ProcessResult run = runRaytracer({scene, "-o", output});
         EXPECT_EQ(run.exitCode, 2) << run.err;
         EXPECT_NE(run.err.find("error: -o " + output +
-                               ": the output must be a file name ending in .png, .pfm or .exr\n"),
+                               ": the output must be a file name ending in .png, .jpg, .jpeg, "
+                               ".ppm, .pfm or .exr, or - for a PNG on stdout\n"),
                   std::string::npos)
             << run.err;
         EXPECT_FALSE(std::filesystem::exists(output));

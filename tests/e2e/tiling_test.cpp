@@ -11,7 +11,9 @@
 
 #include <cerrno>
 #include <functional>
+#include <iterator>
 #include <pty.h>
+#include <regex>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -257,6 +259,13 @@ TEST(Tiling, ProgressIsRedrawnInPlaceOnATerminal) {
         ++redraws;
     EXPECT_GE(redraws, 5u) << "one line per finished percentage, 20 regions: " << run.err;
     EXPECT_NE(run.err.find("\rRendering 320x240: 100% ("), std::string::npos) << run.err;
+    // Each redraw before the end gives the time so far and an estimate of what is left.
+    const std::regex redraw("\rRendering 320x240: [0-9]{1,2}% \\([0-9]+\\.[0-9] s elapsed, "
+                            "about [0-9]+\\.[0-9] s left\\)   ");
+    EXPECT_GE(std::distance(std::sregex_iterator(run.err.begin(), run.err.end(), redraw),
+                            std::sregex_iterator()),
+              4)
+        << run.err;
     EXPECT_EQ(run.err.find("Rendered "), std::string::npos)
         << "no summary line on a terminal: " << run.err;
 }

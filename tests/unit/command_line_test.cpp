@@ -109,6 +109,15 @@ std::vector<std::vector<std::string>> optionSets() {
         {"--help"},
         {"--version"},
         {"a.scene", "--check"},
+        {"a.scene", "-o", "out.jpg", "--quality", "1"},
+        {"a.scene", "-o", "o.JPEG", "--quality", "100"},
+        {"a.scene", "-o", "out.jpg", "--quality", "90"}, // the default, but given
+        {"a.scene", "-o", "out.ppm"},
+        {"a.scene", "-o", "-"},
+        {"--list-devices"},
+        {"a.scene", "--list-devices", "--device", "0"},
+        {"a.scene", "--quiet"},
+        {"a.scene", "-o", "-", "--quiet", "--progress"},
         {"a.scene", "--validate", "--no-cache", "--progress", "--window", "--redraw-continuously",
          "--general-kernel", "--storage-reads"},
     };
@@ -277,8 +286,8 @@ TEST(CommandLine, OptionEqualsValueIsTheSameAsTwoWords) {
 }
 
 TEST(CommandLine, SwitchGivenAValueIsAUsageError) {
-    for (const char* flag :
-         {"--help", "--version", "--validate", "--no-cache", "--progress", "--window"})
+    for (const char* flag : {"--help", "--version", "--validate", "--no-cache", "--progress",
+                             "--window", "--quiet", "--list-devices"})
         EXPECT_EQ(usageErrorOf({"x.scene", std::string(flag) + "=yes"}),
                   std::string(flag) + " takes no value, got '" + flag + "=yes'");
     EXPECT_EQ(usageErrorOf({"x.scene", "--frobnicate=3"}), "unknown option '--frobnicate'");
@@ -312,6 +321,22 @@ TEST(CommandLine, SuggestedOptionsAreRealOptions) {
     }
 }
 
+TEST(CommandLine, OutputOptionsAreChecked) {
+    EXPECT_EQ(parse({"x.scene", "-o", "a.jpg"}).jpegQuality, 90u);
+    EXPECT_EQ(parse({"x.scene", "-o", "a.jpeg", "--quality", "35"}).jpegQuality, 35u);
+    EXPECT_EQ(parse({"x.scene", "--output=-"}).outputPath, "-");
+    EXPECT_TRUE(parse({"--list-devices"}).listDevices); // no scene needed
+    EXPECT_EQ(usageErrorOf({"x.scene", "-o", "a.gif"}),
+              "-o a.gif: the output must be a file name ending in .png, .jpg, .jpeg, .ppm, .pfm "
+              "or .exr, or - for a PNG on stdout");
+    EXPECT_EQ(usageErrorOf({"x.scene", "-o", "a.ppm", "--quality", "90"}),
+              "--quality sets a JPEG's quality and needs -o FILE.jpg or FILE.jpeg, got -o a.ppm");
+    EXPECT_EQ(usageErrorOf({"x.scene", "--quality", "50", "-o", "a.JPG"}), "");
+    EXPECT_EQ(usageErrorOf({"x.scene", "-o", "-", "--pixel", "0,0"}),
+              "-o - writes the PNG to stdout and cannot be combined with --pixel or --bench, "
+              "which print JSON there");
+}
+
 TEST(OutputPattern, FieldsAreReplaced) {
     EXPECT_EQ(expandOutputPattern("out/{name}-{frame}.png", "table", 7), "out/table-7.png");
     EXPECT_EQ(expandOutputPattern("f-{frame:04}.png", "x", 7), "f-0007.png");
@@ -342,7 +367,8 @@ TEST(OutputPattern, AFolderStandsForNamePng) {
     } catch (const UsageError& error) {
         EXPECT_EQ(std::string(error.what()),
                   "-o " + existing.string() +
-                      ": the output must be a file name ending in .png, .pfm or .exr");
+                      ": the output must be a file name ending in .png, .jpg, .jpeg, .ppm, .pfm or "
+                      ".exr, or - for a PNG on stdout");
     }
     EXPECT_EQ(parse({"a.scene", "-o", existing.string() + "/"}).outputPath,
               existing.string() + "/{name}.png");
