@@ -266,6 +266,9 @@ TEST(Batch, PatternAndRegionUsageErrorsWordForWord) {
          "'" + scene +
              "' and 'a/showcase.scene' are both named 'showcase' and would write the "
              "same files"},
+        {{scene, "--turntable", "1", "-o", "-"},
+         "-o - writes one PNG to stdout; several scenes, --turntable and --camera-path write "
+         "files: give -o a pattern or a folder"},
         {{scene, "b.scene", "-o", "{name}.png", "--bench", "2"},
          "several scenes, --turntable and --camera-path render headless, one image after "
          "another, and cannot be combined with --bench, --bench-window, --pixel, --check or "
