@@ -3,8 +3,10 @@
 #include "base/notes.h"
 #include "base/output_format.h"
 #include "base/scope_guard.h"
+#include "batch.h"
 #include "bench.h"
 #include "cli/options.h"
+#include "cli/output_pattern.h"
 #include "cli/render_settings.h"
 #include "cli/version.h"
 #include "gpu/cpu_driver.h"
@@ -90,6 +92,8 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
     settings.floatOutput = writing && holdsFloats(*outputFormatOf(options.outputPath));
     createRenderer(renderer, context, scene, settings);
     createHeadlessTarget(target, context, renderer, options.regionSide);
+    if (options.cropGiven)
+        target.crop = {options.crop.x, options.crop.y, options.crop.z, options.crop.w};
     if (options.benchFrames > 0)
         std::cout << runBenchmark(context, renderer, target, options, startup) << std::endl;
     else if (writing)
@@ -131,6 +135,20 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
              options.dumpShadersTo.c_str(), options.dumpShadersTo.c_str());
         if (options.scenePath.empty()) return kSuccess;
     }
+    // --validate: any message of the layer fails the run, whatever else it did.
+    auto validated = [&](int status) {
+        if (options.validate && validationMessageCount() > 0) {
+            std::cerr << "error: the validation layer printed " << validationMessageCount()
+                      << " message(s)\n";
+            return int(kValidationFailure);
+        }
+        return status;
+    };
+    if (isBatch(options)) return validated(runBatch(options) > 0 ? kSceneError : kSuccess);
+    // One image: a pattern's {name} is the scene's stem, {frame} 0.
+    if (!options.outputPath.empty())
+        options.outputPath =
+            expandOutputPattern(options.outputPath.string(), options.scenePath.stem().string(), 0);
     const auto parseStart = std::chrono::steady_clock::now();
     Scene scene = loadScene(options.scenePath, objSceneSetup(options));
     startup.parseMs =
@@ -174,12 +192,7 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
         note("Wrote %s\n", isStandardOutput(options.outputPath) ? "the PNG to stdout"
                                                                 : options.outputPath.c_str());
 
-    if (options.validate && validationMessageCount() > 0) {
-        std::cerr << "error: the validation layer printed " << validationMessageCount()
-                  << " message(s)\n";
-        return kValidationFailure;
-    }
-    return kSuccess;
+    return validated(kSuccess);
 }
 
 } // namespace

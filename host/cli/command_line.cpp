@@ -54,6 +54,8 @@ std::string commandLine(const Options& options) {
 
     // What changes pixels first, in the order the window's screenshot line has always had.
     if (!options.scenePath.empty()) command += " " + shellQuoted(options.scenePath.string());
+    for (const std::filesystem::path& scene : options.moreScenes)
+        command += " " + shellQuoted(scene.string());
     addPath("-o", options.outputPath);
     addCount("--quality", options.jpegQuality, defaults.jpegQuality);
     add("--width", std::to_string(options.width));
@@ -71,6 +73,9 @@ std::string commandLine(const Options& options) {
     if (options.cameraTargetGiven || camera.up != plainCamera.up)
         add("--camera-up", triple(camera.up));
     if (options.background != defaults.background) add("--background", triple(options.background));
+    if (options.cropGiven)
+        add("--crop", std::to_string(options.crop.x) + "," + std::to_string(options.crop.y) + "," +
+                          std::to_string(options.crop.z) + "," + std::to_string(options.crop.w));
     const KernelChoices &kernel = options.kernel, &plain = defaults.kernel;
     addChoice("--sampler", samplerNames(), kernel.sampler, plain.sampler);
     addCount("--seed", kernel.seed, plain.seed);
@@ -93,6 +98,11 @@ std::string commandLine(const Options& options) {
     addCount("--region-size", options.regionSide, 0);
     if (options.pixelGiven)
         add("--pixel", std::to_string(options.pixel.x) + "," + std::to_string(options.pixel.y));
+    addCount("--turntable", options.turntableFrames, 0);
+    addPath("--camera-path", options.cameraPath);
+    if (options.frameRangeGiven)
+        add("--frames",
+            std::to_string(options.frameRange.x) + "-" + std::to_string(options.frameRange.y));
     addPath("--dump-shaders", options.dumpShadersTo);
     addPath("--save-scene", options.saveScenePath);
     addSwitch("--validate", options.validate);

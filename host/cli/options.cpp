@@ -2,6 +2,7 @@
 
 #include "base/output_format.h"
 #include "cli/option_suggestion.h"
+#include "cli/output_pattern.h"
 #include "cli/window_keys.h"
 
 #include "shared.h"
@@ -77,6 +78,118 @@ glm::uvec2 parsePixel(const std::string& flag, const std::string& text) {
     return pixel;
 }
 
+// Whole numbers from 0 separated by commas, exactly count of them; empty when text is not that.
+std::vector<std::uint32_t> wholeNumbers(const std::string& text, std::size_t count,
+                                        char separator) {
+    std::vector<std::uint32_t> values;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t end = text.find(separator, start);
+        const std::string_view part =
+            std::string_view(text).substr(start, end == std::string::npos ? end : end - start);
+        std::uint32_t value = 0;
+        auto [stop, error] = std::from_chars(part.data(), part.data() + part.size(), value);
+        if (part.empty() || error != std::errc() || stop != part.data() + part.size()) return {};
+        values.push_back(value);
+        if (end == std::string::npos) break;
+        start = end + 1;
+    }
+    return values.size() == count ? values : std::vector<std::uint32_t>{};
+}
+
+// --crop X,Y,W,H: the region's left column, top row, width and height (checked against the
+// image size later).
+glm::uvec4 parseCrop(const std::string& flag, const std::string& text) {
+    const std::vector<std::uint32_t> values = wholeNumbers(text, 4, ',');
+    if (values.empty() || values[2] == 0 || values[3] == 0)
+        throw UsageError(flag +
+                         " expects a region X,Y,W,H (left column, top row, width and height; "
+                         "whole numbers, W and H from 1), got '" +
+                         text + "'");
+    return {values[0], values[1], values[2], values[3]};
+}
+
+// --frames FIRST-LAST or --frames K: frame numbers from 0, inclusive.
+glm::uvec2 parseFrameRange(const std::string& flag, const std::string& text) {
+    std::vector<std::uint32_t> values = wholeNumbers(text, 2, '-');
+    if (values.empty()) values = wholeNumbers(text, 1, '-');
+    if (values.size() == 1) values.push_back(values[0]);
+    if (values.empty() || values[0] > values[1])
+        throw UsageError(flag +
+                         " expects FIRST-LAST or one frame K (whole numbers from 0, FIRST "
+                         "at most LAST), got '" +
+                         text + "'");
+    return {values[0], values[1]};
+}
+
+// The checks of a batch (several scenes, --turntable, --camera-path) and of -o as a
+// pattern or a folder, once every option is known; a folder becomes its pattern.
+void checkBatch(Options& options) {
+    const bool frames = options.turntableFrames > 0 || !options.cameraPath.empty();
+    const std::string output = options.outputPath.string();
+    // An existing folder is the batch's folder; for one image it stays the error it was
+    // (a folder where a file name was meant), unless written as a folder, out/.
+    if (!output.empty() && (output.back() == '/' || (isBatch(options) && isOutputFolder(output))))
+        options.outputPath = folderOutputPattern(options.outputPath, frames);
+    else if (!output.empty() && isOutputFolder(output) && !outputFormatOf(output))
+        throw UsageError("-o " + output + ": the output must be a file name ending in " +
+                         kOutputNames);
+    if (std::string problem = outputPatternProblem(options.outputPath.string()); !problem.empty())
+        throw UsageError("-o " + output + ": " + problem);
+    if (!isBatch(options)) {
+        if (options.frameRangeGiven)
+            throw UsageError("--frames chooses frames of --turntable or --camera-path; neither "
+                             "was given");
+        return;
+    }
+    if (options.turntableFrames > 0 && !options.cameraPath.empty())
+        throw UsageError("--turntable and --camera-path both give the frames' cameras; give one");
+    if (options.benchFrames > 0 || options.benchWindowFrames > 0 || options.pixelGiven ||
+        options.checkOnly || options.forceWindow || !options.saveScenePath.empty())
+        throw UsageError("several scenes, --turntable and --camera-path render headless, one "
+                         "image after another, and cannot be combined with --bench, "
+                         "--bench-window, --pixel, --check, --save-scene or --window");
+    const std::string pattern = options.outputPath.string();
+    if (isStandardOutput(options.outputPath))
+        throw UsageError("-o - writes one PNG to stdout; several scenes, --turntable and "
+                         "--camera-path write files: give -o a pattern or a folder");
+    if (!options.moreScenes.empty() && (pattern.empty() || !outputPatternHas(pattern, "name")))
+        throw UsageError(
+            "several scenes would all write " + (pattern.empty() ? "no file" : pattern) +
+            ": give -o a pattern with {name}, the scene file's stem (out/{name}.png), or a "
+            "folder (out/)");
+    const bool manyFrames = options.turntableFrames > 1 || !options.cameraPath.empty();
+    const std::string framesFlag = options.turntableFrames > 0
+                                       ? "--turntable " + std::to_string(options.turntableFrames)
+                                       : std::string("--camera-path");
+    if (manyFrames && (pattern.empty() || !outputPatternHas(pattern, "frame")))
+        throw UsageError(
+            framesFlag + " renders frames, but -o " +
+            (pattern.empty() ? std::string("is not given") : pattern + " has no {frame}") +
+            ": give a pattern such as out/frame-{frame:04}.png");
+    if (pattern.empty()) throw UsageError(framesFlag + " renders headless: give -o");
+    if (options.frameRangeGiven && options.turntableFrames > 0 &&
+        options.frameRange.y >= options.turntableFrames)
+        throw UsageError("--frames " + std::to_string(options.frameRange.x) + "-" +
+                         std::to_string(options.frameRange.y) + " goes past the last frame of " +
+                         framesFlag + ", " + std::to_string(options.turntableFrames - 1));
+    if (!options.cameraPath.empty() &&
+        (options.cameraTargetGiven || options.camera != CameraPose{} || options.fovDegrees != 60.0))
+        throw UsageError("--camera-path gives every frame's camera and field of view; it cannot "
+                         "be combined with --camera-pos, --camera-target, --camera-up or --fov");
+    // Two scenes of one stem would write the same files.
+    if (outputPatternHas(pattern, "name")) {
+        std::vector<std::filesystem::path> scenes = {options.scenePath};
+        scenes.insert(scenes.end(), options.moreScenes.begin(), options.moreScenes.end());
+        for (std::size_t i = 0; i < scenes.size(); ++i)
+            for (std::size_t j = i + 1; j < scenes.size(); ++j)
+                if (scenes[i].stem() == scenes[j].stem())
+                    throw UsageError("'" + scenes[i].string() + "' and '" + scenes[j].string() +
+                                     "' are both named '" + scenes[i].stem().string() +
+                                     "' and would write the same files");
+    }
+}
+
 // One of names' values by its name; the message lists them ("grid, stratified or r2").
 template <typename T>
 T parseChoice(const std::string& flag, const std::string& text, const ChoiceNames<T>& names) {
@@ -138,9 +251,11 @@ const ChoiceNames<Acceleration>& accelerationNames() {
 
 std::string usageText() {
     return "Usage: Raytracer SCENE [options]\n"
+           "       Raytracer SCENE... -o 'out/{name}.png' [options]\n"
            "Renders SCENE in a window (headless to a PNG when there is no display: STEM.png,\n"
            "or STEM-1.png, STEM-2.png, ... beside an earlier one, which is kept). SCENE is a\n"
-           "scene file, or a Wavefront OBJ model (.obj, with its MTL materials).\n"
+           "scene file, or a Wavefront OBJ model (.obj, with its MTL materials). Several\n"
+           "scenes, --turntable and --camera-path render a batch headless (docs/batches.md).\n"
            "\n"
            "  -o, --output FILE     render headless and write FILE: .png, .jpg/.jpeg or .ppm\n"
            "                        (8-bit), or .pfm or .exr (float: each pixel before the\n"
@@ -173,6 +288,15 @@ std::string usageText() {
            "                        (with -o, the last frame is written too)\n"
            "  --pixel X,Y           print the ray tree of pixel X,Y (column, row) as the kernel\n"
            "                        traced it, as JSON on stdout; headless; alone without -o\n"
+           "  --crop X,Y,W,H        render only that region of the full image: W x H pixels, each\n"
+           "                        as the full render has it (tools/stitch joins regions)\n"
+           "  --turntable N         N frames orbiting the scene's centre about the camera's up\n"
+           "                        axis at its distance and height; frame 0 is the camera\n"
+           "  --camera-path FILE    a frame per line of FILE: POSITION TARGET UP FOV, as in\n"
+           "                        0,0,0 0,0,-1 0,1,0 60 (# comments and blank lines allowed)\n"
+           "  --frames FIRST-LAST   only those frames of --turntable or --camera-path (or one: K)\n"
+           "  -o patterns           {name}: the scene file's stem; {frame}, {frame:04}: the frame\n"
+           "                        number (zero-padded); a folder out/ is out/{name}.png\n"
            "  --device NAME|INDEX   use this Vulkan device (default: a real GPU before a CPU one)\n"
            "  --list-devices        print every Vulkan device (index, name, type, driver, fp64,\n"
            "                        limits) and exit; --device takes the index or the name\n"
@@ -243,7 +367,7 @@ Options parseOptions(int argc, const char* const* argv) {
         } else if (arg == "-o" || arg == "--output") {
             options.outputPath = value();
             if (options.outputPath.empty()) throw UsageError(arg + " expects a file name");
-            if (!outputFormatOf(options.outputPath))
+            if (!isOutputFolder(options.outputPath) && !outputFormatOf(options.outputPath))
                 throw UsageError(arg + " " + options.outputPath.string() +
                                  ": the output must be a file name ending in " + kOutputNames);
         } else if (arg == "--quality") {
@@ -326,6 +450,17 @@ Options parseOptions(int argc, const char* const* argv) {
         } else if (arg == "--pixel") {
             options.pixel = parsePixel(arg, value());
             options.pixelGiven = true;
+        } else if (arg == "--turntable") {
+            options.turntableFrames = parseCount(arg, value(), 1, 100000);
+        } else if (arg == "--camera-path") {
+            options.cameraPath = value();
+            if (options.cameraPath.empty()) throw UsageError("--camera-path expects a file name");
+        } else if (arg == "--frames") {
+            options.frameRange = parseFrameRange(arg, value());
+            options.frameRangeGiven = true;
+        } else if (arg == "--crop") {
+            options.crop = parseCrop(arg, value());
+            options.cropGiven = true;
         } else if (parseKernelOption(arg, value, options.kernel)) {
         } else if (arg.size() > 1 && arg[0] == '-') {
             const std::string close = closeOptions(arg, documentedOptions(usageText()));
@@ -334,8 +469,7 @@ Options parseOptions(int argc, const char* const* argv) {
         } else if (options.scenePath.empty()) {
             options.scenePath = arg;
         } else {
-            throw UsageError("more than one scene file given: '" + options.scenePath.string() +
-                             "' and '" + arg + "'");
+            options.moreScenes.push_back(arg);
         }
         if (hasInlineValue && !inlineValueUsed)
             throw UsageError(arg + " takes no value, got '" + args[i] + "'");
@@ -378,5 +512,25 @@ Options parseOptions(int argc, const char* const* argv) {
     if (isStandardOutput(options.outputPath) && (options.pixelGiven || options.benchFrames > 0))
         throw UsageError("-o - writes the PNG to stdout and cannot be combined with --pixel or "
                          "--bench, which print JSON there");
+    if (options.cropGiven) {
+        const glm::uvec4 crop = options.crop;
+        if (std::uint64_t(crop.x) + crop.z > options.width ||
+            std::uint64_t(crop.y) + crop.w > options.height)
+            throw UsageError("--crop " + std::to_string(crop.x) + "," + std::to_string(crop.y) +
+                             "," + std::to_string(crop.z) + "," + std::to_string(crop.w) +
+                             " lies outside the " + std::to_string(options.width) + "x" +
+                             std::to_string(options.height) + " image: X+W must be at most " +
+                             std::to_string(options.width) + " and Y+H at most " +
+                             std::to_string(options.height));
+        if (options.outputPath.empty() || options.forceWindow || options.benchWindowFrames > 0)
+            throw UsageError("--crop renders a region headless: give -o, and neither --window "
+                             "nor --bench-window");
+    }
+    checkBatch(options);
     return options;
+}
+
+bool isBatch(const Options& options) {
+    return !options.moreScenes.empty() || options.turntableFrames > 0 ||
+           !options.cameraPath.empty();
 }

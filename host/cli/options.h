@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 struct Options {
     std::filesystem::path scenePath;
@@ -63,6 +64,17 @@ struct Options {
     // headless, and alone (no PNG) without -o.
     bool pixelGiven = false;
     glm::uvec2 pixel{0};
+    // Batches (docs/batches.md): the scenes after the first, rendered in the same process
+    // with one device and one set of compiled kernels; -o then holds {name} or is a folder.
+    std::vector<std::filesystem::path> moreScenes;
+    std::uint32_t turntableFrames = 0; // --turntable N: N frames orbiting the scene's centre
+    std::filesystem::path cameraPath;  // --camera-path FILE: one frame per camera of FILE
+    bool frameRangeGiven = false;      // --frames FIRST-LAST: only those frames (a farm's share)
+    glm::uvec2 frameRange{0};          // first and last frame, inclusive
+    // --crop X,Y,W,H: only that region of the full image, pixel for pixel as the full image has
+    // it; the output is W x H.
+    bool cropGiven = false;
+    glm::uvec4 crop{0};
 
     bool operator==(const Options&) const = default; // commandLine's round trip is tested by it
 };
@@ -82,6 +94,10 @@ struct UsageError : std::runtime_error {
 };
 
 Options parseOptions(int argc, const char* const* argv);
+
+// True when the command line renders more than one image (several scenes, --turntable or
+// --camera-path): host/batch.cpp renders it, headless.
+bool isBatch(const Options& options);
 
 std::string usageText();
 

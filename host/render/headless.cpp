@@ -48,6 +48,12 @@ void recordFloatCopyToHost(VkCommandBuffer commands, const Buffer& accumulation,
                          &toHost, 0, nullptr, 0, nullptr);
 }
 
+// The part of the image that is traced and read: the crop, or all of it.
+TraceRegion tracedArea(const HeadlessTarget& target, const Renderer& renderer) {
+    if (target.crop.width > 0) return target.crop;
+    return {0, 0, renderer.outputImage.width, renderer.outputImage.height};
+}
+
 } // namespace
 
 void recordCopyToHost(VkCommandBuffer commands, const Image& image, const Buffer& hostBuffer) {
@@ -103,14 +109,15 @@ void createHeadlessTarget(HeadlessTarget& target, const Context& context, const 
 // region's work, so nothing else waits behind a long frame.
 FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context,
                                 const Renderer& renderer, ProgressMode progressMode) {
-    const Image& output = renderer.outputImage;
-    Progress progress = startProgress(progressMode, output.width, output.height);
-    const double totalPixels = double(output.width) * output.height;
+    const TraceRegion area = tracedArea(target, renderer);
+    Progress progress = startProgress(progressMode, area.width, area.height);
+    const double totalPixels = double(area.width) * area.height;
     double pixelsDone = 0;
     FrameTiming timing;
     timing.gpuMs = renderer.timestampPool ? 0.0 : -1.0;
 
-    beginFrame(target.planner, output.width, output.height);
+    // The planner tiles the area as if it were an image; its regions move to the area's place.
+    beginFrame(target.planner, area.width, area.height);
     const Clock::time_point frameStart = Clock::now();
     TraceRegion region;
     while (nextRegion(target.planner, region)) {
@@ -120,7 +127,8 @@ FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context,
         begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
         VK_CHECK(vkBeginCommandBuffer(target.commands, &begin));
         if (timing.submissions == 0) recordTraceBegin(renderer, target.commands);
-        recordTraceRegion(renderer, target.commands, region);
+        recordTraceRegion(renderer, target.commands,
+                          {area.x + region.x, area.y + region.y, region.width, region.height});
         const bool last = frameCovered(target.planner);
         if (last) {
             recordTraceEnd(renderer, target.commands);
@@ -146,21 +154,38 @@ FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context,
 }
 
 Image8 readHeadlessImage(const HeadlessTarget& target, const Renderer& renderer) {
-    return imageFromHostCopy(renderer.outputImage, target.readbackBuffer);
+    Image8 whole = imageFromHostCopy(renderer.outputImage, target.readbackBuffer);
+    const TraceRegion area = tracedArea(target, renderer);
+    if (area.width == renderer.outputImage.width && area.height == renderer.outputImage.height)
+        return whole;
+    Image8 part;
+    part.width = int(area.width);
+    part.height = int(area.height);
+    part.rgba.resize(std::size_t(area.width) * area.height * 4);
+    for (std::uint32_t row = 0; row < area.height; ++row)
+        std::memcpy(&part.rgba[std::size_t(row) * area.width * 4],
+                    &whole.rgba[(std::size_t(area.y + row) * whole.width + area.x) * 4],
+                    std::size_t(area.width) * 4);
+    return part;
 }
 
 ImageF readHeadlessFloatImage(const HeadlessTarget& target, const Renderer& renderer) {
     if (!target.floatReadbackBuffer.buffer)
         throw std::logic_error("readHeadlessFloatImage: the renderer has no float output");
+    const TraceRegion area = tracedArea(target, renderer);
     ImageF image;
-    image.width = static_cast<int>(renderer.outputImage.width);
-    image.height = static_cast<int>(renderer.outputImage.height);
-    const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
-    image.rgb.resize(pixels * 3);
+    image.width = static_cast<int>(area.width);
+    image.height = static_cast<int>(area.height);
+    image.rgb.resize(std::size_t(area.width) * area.height * 3);
     const auto* averages = static_cast<const float*>(target.floatReadbackBuffer.mapped);
-    for (std::size_t p = 0; p < pixels; ++p)
-        for (std::size_t c = 0; c < 3; ++c)
-            image.rgb[p * 3 + c] = averages[p * 4 + c];
+    for (std::uint32_t row = 0; row < area.height; ++row)
+        for (std::uint32_t column = 0; column < area.width; ++column) {
+            const std::size_t from =
+                std::size_t(area.y + row) * renderer.outputImage.width + area.x + column;
+            const std::size_t to = std::size_t(row) * area.width + column;
+            for (std::size_t c = 0; c < 3; ++c)
+                image.rgb[to * 3 + c] = averages[from * 4 + c];
+        }
     return image;
 }
 

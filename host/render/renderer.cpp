@@ -145,7 +145,7 @@ TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderS
 }
 
 void createRenderer(Renderer& renderer, const Context& context, const Scene& scene,
-                    const RenderSettings& settings) {
+                    const RenderSettings& settings, KernelCache* kernels) {
     OnFailure release([&] { destroyRenderer(renderer, context); });
     renderer.settings = settings;
     if (settings.floatOutput && settings.progressive)
@@ -164,9 +164,14 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
     renderer.specialization.texelReads = renderer.scene.texelReads;
     if (!renderer.scene.storageReadsNote.empty())
         note("%s\n", renderer.scene.storageReadsNote.c_str());
-    renderer.pipeline =
-        loadTracePipeline(context, {settings.shaderDirectory, settings.cacheDirectory},
-                          renderer.specialization, precision);
+    const KernelSource source{settings.shaderDirectory, settings.cacheDirectory};
+    if (kernels) {
+        renderer.pipeline =
+            cachedTracePipeline(*kernels, context, source, renderer.specialization, precision);
+        renderer.pipelineShared = true;
+    } else {
+        renderer.pipeline = loadTracePipeline(context, source, renderer.specialization, precision);
+    }
     const std::size_t primitives = renderer.scene.sphereCount + renderer.scene.triangleCount;
     if (primitives > 0)
         note("Scene memory: %llu bytes, %.1f bytes per primitive\n",
@@ -226,6 +231,10 @@ void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t widt
 
 void setCamera(Renderer& renderer, const CameraPose& camera) {
     renderer.settings.camera = camera;
+}
+
+void setFieldOfView(Renderer& renderer, double degrees) {
+    renderer.settings.fovDegrees = degrees;
 }
 
 void recordTraceBegin(const Renderer& renderer, VkCommandBuffer commands) {
@@ -332,6 +341,6 @@ void destroyRenderer(Renderer& renderer, const Context& context) {
     if (renderer.descriptorPool)
         vkDestroyDescriptorPool(context.device, renderer.descriptorPool, nullptr);
     destroyGpuScene(context, renderer.scene);
-    destroyTracePipeline(context, renderer.pipeline);
+    if (!renderer.pipelineShared) destroyTracePipeline(context, renderer.pipeline);
     renderer = Renderer{};
 }

@@ -4,6 +4,7 @@
 
 #include "gpu/context.h"
 #include "gpu/resources.h"
+#include "render/kernel_cache.h"
 #include "render/region_planner.h"
 #include "render/scene_upload.h"
 #include "render/trace_pipeline.h"
@@ -61,6 +62,7 @@ struct SlotSources {
 
 struct Renderer {
     TracePipeline pipeline;
+    bool pipelineShared = false; // pipeline belongs to a KernelCache (a batch), not to this
     GpuScene scene;
     VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
     VkDescriptorSet descriptorSet = VK_NULL_HANDLE;
@@ -85,8 +87,9 @@ struct Renderer {
 // kernel is specialised for the settings and for what the scene holds
 // (traceSpecialization). A shader that does not compile throws ShaderCompileError
 // (host/gpu/shader_compiler.h); any failure releases what was made before it throws.
+// With kernels (a batch), the pipeline comes from that cache and stays in it.
 void createRenderer(Renderer& renderer, const Context& context, const Scene& scene,
-                    const RenderSettings& settings);
+                    const RenderSettings& settings, KernelCache* kernels = nullptr);
 
 // The specialization constants for this packed scene and these settings: its primitive
 // kinds, hierarchy, whether any material has ks > 0, the method choices, and texel reads
@@ -106,6 +109,9 @@ void recordTrace(const Renderer& renderer, VkCommandBuffer commands, SampleRange
 
 // Points the camera elsewhere (the window's controls); takes effect at the next record.
 void setCamera(Renderer& renderer, const CameraPose& camera);
+
+// The vertical field of view of the next record (a frame of --camera-path).
+void setFieldOfView(Renderer& renderer, double degrees);
 
 // The same frame spread over several submissions (headless): recordTraceBegin in the
 // first command buffer, recordTraceRegion for each region, recordTraceEnd in the last.

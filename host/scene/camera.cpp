@@ -128,3 +128,14 @@ CameraPose pivotAtScene(const CameraPose& pose, const SceneBounds& bounds, doubl
     result.target = pose.position + forward * depth;
     return result;
 }
+
+CameraPose turntableCamera(const CameraPose& pose, glm::dvec3 centre, std::uint32_t frame,
+                           std::uint32_t frames) {
+    if (frame == 0 || frames == 0) return pose;
+    const double angle = 2.0 * M_PI * double(frame) / double(frames);
+    const glm::dvec3 axis = glm::normalize(pose.up);
+    CameraPose turned = pose;
+    turned.position = centre + rotateAround(pose.position - centre, axis, angle);
+    turned.target = centre + rotateAround(pose.target - centre, axis, angle);
+    return turned;
+}

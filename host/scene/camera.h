@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <cstdint>
 #include <string>
 
 // The default camera by default: the eye at the origin looking down -z, +y up.
@@ -61,3 +62,10 @@ SceneBounds sceneBounds(const Scene& scene);
 // The same view, with the target moved along the line of sight to the depth of the
 // scene's centre (at least minimumDistance ahead), so that orbiting turns around the scene.
 CameraPose pivotAtScene(const CameraPose& pose, const SceneBounds& bounds, double minimumDistance);
+
+// Frame `frame` of `frames` of --turntable: eye and target turned by 2 pi frame / frames
+// around the line through centre along pose.up (counter-clockwise seen from above, that is
+// from +up), so the distance to that line and the height along it are kept. Frame 0 is
+// pose itself, bit for bit.
+CameraPose turntableCamera(const CameraPose& pose, glm::dvec3 centre, std::uint32_t frame,
+                           std::uint32_t frames);

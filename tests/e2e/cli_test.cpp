@@ -33,7 +33,9 @@ TEST(CommandLine, HelpPrintsUsageAndSucceeds) {
     EXPECT_NE(run.out.find("--bench N"), std::string::npos);
     for (const char* option :
          {"--sampler grid|stratified|r2", "--seed N", "--precision fp32|fp64",
-          "--sphere-test naive|stable", "--triangle-test mt|watertight", "--offset fixed|scaled"})
+          "--sphere-test naive|stable", "--triangle-test mt|watertight", "--offset fixed|scaled",
+          "--crop X,Y,W,H", "--turntable N", "--camera-path FILE", "--frames FIRST-LAST",
+          "Raytracer SCENE... -o 'out/{name}.png'"})
         EXPECT_NE(run.out.find(option), std::string::npos) << option << " missing from " << run.out;
 }
 
@@ -77,7 +79,9 @@ TEST(CommandLine, BadOptionValuesAreUsageErrors) {
          "--background expects three non-negative numbers R,G,B, got '1,1'"},
         {{"x.scene", "--width"}, "--width expects a value"},
         {{"x.scene", "--frobnicate"}, "unknown option '--frobnicate'"},
-        {{"a.scene", "b.scene"}, "more than one scene file given: 'a.scene' and 'b.scene'"},
+        {{"a.scene", "b.scene"},
+         "several scenes would all write no file: give -o a pattern with {name}, the scene "
+         "file's stem (out/{name}.png), or a folder (out/)"},
         {{"x.scene", "--sampler", "halton"},
          "--sampler expects grid, stratified or r2, got 'halton'"},
         {{"x.scene", "--seed", "-1"},

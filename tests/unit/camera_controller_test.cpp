@@ -2,6 +2,7 @@
 // camera), orbit, dolly, fly and look, and the scene bounds the window's controls use.
 // No Vulkan, no window.
 #include "scene/camera.h"
+#include "scene/camera_path.h"
 
 #include <gtest/gtest.h>
 
@@ -163,3 +164,58 @@ TEST(SceneBounds, PivotKeepsTheLineOfSight) {
 }
 
 } // namespace
+
+TEST(Turntable, FrameZeroIsThePoseBitForBit) {
+    const CameraPose pose{{0.1, 0.7, 0.3}, {0.2, 0.1, -4.0}, {0.0, 1.0, 0.05}};
+    EXPECT_TRUE(turntableCamera(pose, {0.3, -0.2, -5.0}, 0, 7) == pose);
+}
+
+TEST(Turntable, KeepsDistanceAndHeightAndTurnsCounterClockwiseFromAbove) {
+    const CameraPose pose; // the eye at the origin, looking down -z
+    const glm::dvec3 centre{0.0, 2.0, -5.0};
+    for (std::uint32_t k = 1; k < 8; ++k) {
+        const CameraPose turned = turntableCamera(pose, centre, k, 8);
+        const glm::dvec3 offset = turned.position - centre;
+        EXPECT_NEAR(std::hypot(offset.x, offset.z), 5.0, 1e-12) << k;
+        EXPECT_NEAR(offset.y, -2.0, 1e-12) << k; // the height along up
+        EXPECT_TRUE(turned.up == pose.up);
+        // Still looking along the same line through the centre's axis: at the centre's
+        // depth the view passes over the axis.
+        const glm::dvec3 view = glm::normalize(turned.target - turned.position);
+        const glm::dvec3 towards = glm::normalize(glm::dvec3(-offset.x, 0.0, -offset.z));
+        EXPECT_NEAR(glm::dot(view, towards), 1.0, 1e-12) << k;
+    }
+    // A quarter turn about +y (right-handed: counter-clockwise seen from +y) takes the eye
+    // from +z of the centre to +x of it.
+    const CameraPose quarter = turntableCamera(pose, centre, 1, 4);
+    EXPECT_NEAR(quarter.position.x, 5.0, 1e-12);
+    EXPECT_NEAR(quarter.position.z, -5.0, 1e-12);
+    const CameraPose full = turntableCamera(pose, centre, 4, 4);
+    EXPECT_NEAR(glm::length(full.position - pose.position), 0.0, 1e-12);
+}
+
+TEST(CameraPath, ReadsFieldsCommentsAndBlankLinesExactly) {
+    const std::vector<PathCamera> cameras =
+        parseCameraPath("# a path\n\n  0,0,0 0,0,-1 0,1,0 60 # the default\r\n"
+                        "0.1,-2,3e-3\t4,5,6   0,0,1 33.3",
+                        "p.txt");
+    ASSERT_EQ(cameras.size(), 2u);
+    EXPECT_TRUE(cameras[0].pose == CameraPose{});
+    EXPECT_EQ(cameras[0].fovDegrees, 60.0);
+    EXPECT_EQ(cameras[0].line, 3);
+    EXPECT_EQ(cameras[1].pose.position, glm::dvec3(0.1, -2, 3e-3));
+    EXPECT_EQ(cameras[1].pose.target, glm::dvec3(4, 5, 6));
+    EXPECT_EQ(cameras[1].pose.up, glm::dvec3(0, 0, 1));
+    EXPECT_EQ(cameras[1].fovDegrees, 33.3);
+    EXPECT_EQ(cameras[1].line, 4);
+}
+
+TEST(CameraPath, ErrorsNameTheLine) {
+    try {
+        parseCameraPath("0,0,0 0,0,-1 0,1,0 60\n\n0,0,0 0,0,-1 0,1,0 60 7\n", "p.txt");
+        FAIL() << "no error";
+    } catch (const SceneError& error) {
+        EXPECT_STREQ(error.what(), "p.txt:3: error: expected 4 fields, POSITION TARGET UP FOV (as "
+                                   "in 0,0,0 0,0,-1 0,1,0 60), got 5");
+    }
+}

@@ -5,6 +5,7 @@
 #include "cli/command_line.h"
 #include "cli/option_suggestion.h"
 #include "cli/options.h"
+#include "cli/output_pattern.h"
 #include "shared.h"
 
 #include <gtest/gtest.h>
@@ -97,6 +98,14 @@ std::vector<std::vector<std::string>> optionSets() {
         {"a.scene", "--pixel", "0,0"},
         {"a.scene", "-o", "b.png", "--width", "20", "--height", "10", "--pixel", "19,9"},
         {"--dump-shaders", "dumped shaders"},
+        {"a.scene", "b c.scene", "d/e.scene", "-o", "out/{name}.png"},
+        {"a.scene", "b.scene", "-o", "folder/"},
+        {"a.scene", "-o", "out/{name}-{frame:04}.exr", "--turntable", "12"},
+        {"a.scene", "-o", "f{frame}.png", "--turntable", "1"},
+        {"a.scene", "-o", "f{frame}.png", "--turntable", "9", "--frames", "2-5"},
+        {"a.scene", "-o", "f{frame:09}.png", "--camera-path", "my path.txt", "--frames", "3"},
+        {"a.scene", "-o", "part.png", "--crop", "0,0,1,1"},
+        {"a.scene", "-o", "part.png", "--width", "33", "--height", "20", "--crop", "7,3,26,17"},
         {"--help"},
         {"--version"},
         {"a.scene", "--check"},
@@ -299,7 +308,7 @@ TEST(CommandLine, UnknownOptionNamesTheNearMisses) {
         {"--thread", "; did you mean --threads?"}, // the plural forgotten
         {"--Width", "; did you mean --width?"},    // case
         {"--accell", "; did you mean --accel?"},
-        {"--camera", "; did you mean --camera-pos, --camera-target or --camera-up?"}, // prefix
+        {"--camera", "; did you mean --camera-path, --camera-pos or --camera-target?"}, // prefix
         {"--dump", "; did you mean --dump-shaders?"},
         {"--frobnicate", ""}, // nothing close
         {"--x", ""},          // too short to mean one
@@ -334,4 +343,41 @@ TEST(CommandLine, OutputOptionsAreChecked) {
     EXPECT_EQ(usageErrorOf({"x.scene", "-o", "-", "--pixel", "0,0"}),
               "-o - writes the PNG to stdout and cannot be combined with --pixel or --bench, "
               "which print JSON there");
+}
+
+TEST(OutputPattern, FieldsAreReplaced) {
+    EXPECT_EQ(expandOutputPattern("out/{name}-{frame}.png", "table", 7), "out/table-7.png");
+    EXPECT_EQ(expandOutputPattern("f-{frame:04}.png", "x", 7), "f-0007.png");
+    EXPECT_EQ(expandOutputPattern("f-{frame:02}.png", "x", 12345), "f-12345.png");
+    EXPECT_EQ(expandOutputPattern("{name}/{name}.exr", "a b", 0), "a b/a b.exr");
+    EXPECT_EQ(expandOutputPattern("plain.png", "x", 3), "plain.png");
+    EXPECT_TRUE(outputPatternHas("a{frame:09}.png", "frame"));
+    EXPECT_FALSE(outputPatternHas("a{frame:09}.png", "name"));
+    EXPECT_EQ(outputPatternProblem("a{name.png"), "a '{' is not closed");
+    EXPECT_EQ(outputPatternProblem("a{frame:0}.png"),
+              "unknown field {frame:0} (known: {name}, {frame}, {frame:04})");
+    EXPECT_EQ(outputPatternProblem("a{}.png"),
+              "unknown field {} (known: {name}, {frame}, {frame:04})");
+}
+
+TEST(OutputPattern, AFolderStandsForNamePng) {
+    EXPECT_EQ(parse({"a.scene", "b.scene", "-o", "out/"}).outputPath, "out/{name}.png");
+    EXPECT_EQ(parse({"a.scene", "-o", "out/", "--turntable", "3"}).outputPath,
+              "out/{name}-{frame:04}.png");
+    const std::filesystem::path existing = std::filesystem::path(TEST_OUTPUT_DIR) / "command-line";
+    std::filesystem::create_directories(existing);
+    EXPECT_EQ(parse({"a.scene", "b.scene", "-o", existing.string()}).outputPath,
+              existing / "{name}.png");
+    // For one image an existing folder is not taken for one: a file name was meant.
+    try {
+        parse({"a.scene", "-o", existing.string()});
+        ADD_FAILURE() << "no usage error";
+    } catch (const UsageError& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  "-o " + existing.string() +
+                      ": the output must be a file name ending in .png, .jpg, .jpeg, .ppm, .pfm or "
+                      ".exr, or - for a PNG on stdout");
+    }
+    EXPECT_EQ(parse({"a.scene", "-o", existing.string() + "/"}).outputPath,
+              existing.string() + "/{name}.png");
 }

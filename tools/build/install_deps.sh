@@ -20,6 +20,7 @@ packages=(
     clang libclang-rt-14-dev  # make check-hardening: libFuzzer and the sanitizer build
     clang-format              # tools/format.sh --check, run by the suite
     python3-skimage           # the SSIM test's independent values (structural_similarity)
+    parallel                  # GNU parallel: the farm recipe of docs/batches.md, tested locally
 )
 # Optional: the benchmark only. Raytracer and the tests never need them.
 bench_packages=(libembree-dev python3-matplotlib)
