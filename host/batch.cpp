@@ -5,7 +5,6 @@
 #include "base/scope_guard.h"
 #include "cli/output_pattern.h"
 #include "cli/render_settings.h"
-#include "gpu/image_limits.h"
 #include "render/headless.h"
 #include "render/interrupt.h"
 #include "render/kernel_cache.h"
@@ -107,10 +106,7 @@ int runBatch(const Options& options) {
         destroyKernelCache(kernels, context);
         destroyContext(context);
     });
-    createInstance(context, {}, options.validate);
-    createDevice(context, options.device, VK_NULL_HANDLE,
-                 options.kernel.precision == Precision::Fp64);
-    checkImageFits(imageLimitsOf(context), options.width, options.height, true);
+    openHeadlessDevice(context, options);
 
     int failed = 0;
     std::uint32_t images = 0;

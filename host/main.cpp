@@ -11,7 +11,6 @@
 #include "cli/version.h"
 #include "gpu/cpu_driver.h"
 #include "gpu/device_list.h"
-#include "gpu/image_limits.h"
 #include "render/headless.h"
 #include "render/interrupt.h"
 #include "render/kernel_sources.h"
@@ -83,10 +82,7 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
         destroyRenderer(renderer, context);
         destroyContext(context);
     });
-    createInstance(context, {}, options.validate);
-    createDevice(context, options.device, VK_NULL_HANDLE,
-                 options.kernel.precision == Precision::Fp64);
-    checkImageFits(imageLimitsOf(context), options.width, options.height, true);
+    openHeadlessDevice(context, options);
     RenderSettings settings = renderSettingsFrom(options);
     // -o out.pfm|out.exr: the averages before the 8-bit rounding (docs/accuracy.md).
     settings.floatOutput = writing && holdsFloats(*outputFormatOf(options.outputPath));

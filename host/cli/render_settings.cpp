@@ -1,6 +1,7 @@
 // Options to RenderSettings, field by field.
 #include "cli/render_settings.h"
 
+#include "gpu/image_limits.h"
 #include "gpu/pipeline_cache.h"
 
 RenderSettings renderSettingsFrom(const Options& options) {
@@ -19,4 +20,11 @@ RenderSettings renderSettingsFrom(const Options& options) {
     settings.generalKernel = options.generalKernel;
     settings.storageReads = options.storageReads;
     return settings;
+}
+
+void openHeadlessDevice(Context& context, const Options& options) {
+    createInstance(context, {}, options.validate);
+    createDevice(context, options.device, VK_NULL_HANDLE,
+                 options.kernel.precision == Precision::Fp64);
+    checkImageFits(imageLimitsOf(context), options.width, options.height, true);
 }
