@@ -41,3 +41,7 @@ void destroyContext(Context& context);
 
 // How many messages the validation layer has printed so far (warnings and errors).
 std::uint32_t validationMessageCount();
+
+// A device type as people name it: "discrete GPU", "integrated GPU", "virtual GPU", "CPU",
+// "other" (the device choice's messages; --list-devices prints it in lower case).
+const char* deviceTypeName(VkPhysicalDeviceType type);

@@ -1,25 +1,21 @@
 #include "gpu/device_list.h"
 
+#include "gpu/context.h"
 #include "gpu/vk_check.h"
+
+#include <cctype>
 
 #include <cstdint>
 #include <vector>
 
 namespace {
 
-const char* typeName(VkPhysicalDeviceType type) {
-    switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
-        return "discrete gpu";
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
-        return "integrated gpu";
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
-        return "virtual gpu";
-    case VK_PHYSICAL_DEVICE_TYPE_CPU:
-        return "cpu";
-    default:
-        return "other";
-    }
+// "discrete gpu", "cpu", ...: the device choice's names in lower case.
+std::string typeName(VkPhysicalDeviceType type) {
+    std::string name = deviceTypeName(type);
+    for (char& c : name)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return name;
 }
 
 std::string apiVersionText(std::uint32_t version) {
@@ -69,7 +65,7 @@ std::string deviceListing(VkInstance instance) {
         vkGetPhysicalDeviceFeatures(devices[i], &features);
         const VkPhysicalDeviceLimits& limits = properties.limits;
         text += "[" + std::to_string(i) + "] " + properties.deviceName + "\n";
-        text += std::string("  type: ") + typeName(properties.deviceType) + "\n";
+        text += "  type: " + typeName(properties.deviceType) + "\n";
         text += driverLines(devices[i], properties);
         text += "  vulkan: " + apiVersionText(properties.apiVersion) + "\n";
         text += std::string("  fp64 (shaderFloat64): ") + (features.shaderFloat64 ? "yes" : "no") +

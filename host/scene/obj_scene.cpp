@@ -69,11 +69,9 @@ class SmoothNormals {
         for (std::size_t f = 0; f < model.faces.size(); ++f) {
             newell_.push_back(newellNormal(positions, model.faces[f]));
             unit_.push_back(normalizedOrZero(newell_.back()));
-            for (const std::uint32_t p : model.faces[f])
+            for (const std::uint32_t p : model.faces[f]) // each face once, though p repeats
                 if (facesAround_[p].empty() || facesAround_[p].back() != f)
-                    if (std::find(facesAround_[p].begin(), facesAround_[p].end(), f) ==
-                        facesAround_[p].end())
-                        facesAround_[p].push_back(static_cast<std::uint32_t>(f));
+                    facesAround_[p].push_back(static_cast<std::uint32_t>(f));
         }
     }
 
