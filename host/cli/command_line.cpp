@@ -110,6 +110,7 @@ std::string commandLine(const Options& options) {
     addSwitch("--progress", options.progress);
     addSwitch("--quiet", options.quiet);
     addSwitch("--window", options.forceWindow);
+    addSwitch("--overlay", options.overlay);
     addSwitch("--redraw-continuously", options.redrawContinuously);
     addSwitch("--general-kernel", options.generalKernel);
     addSwitch("--storage-reads", options.storageReads);

@@ -313,6 +313,7 @@ std::string usageText() {
            "  --progress            report progress on stderr even for a render under a second\n"
            "  --quiet               print no progress, notes or warnings on stderr; errors only\n"
            "  --window              show a window or fail; never fall back to a headless PNG\n"
+           "  --overlay             open the window with its overlay shown (H toggles it)\n"
            "  --shader-dir DIR      compile the kernel from DIR's sources (trace.comp and its\n"
            "                        includes); the window recompiles when one is saved\n"
            "  --dump-shaders DIR    write the built-in shader sources to DIR and exit\n"
@@ -441,6 +442,8 @@ Options parseOptions(int argc, const char* const* argv) {
             options.progress = true;
         } else if (arg == "--window") {
             options.forceWindow = true;
+        } else if (arg == "--overlay") {
+            options.overlay = true;
         } else if (arg == "--redraw-continuously") {
             options.redrawContinuously = true;
         } else if (arg == "--general-kernel") {

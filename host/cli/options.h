@@ -49,7 +49,8 @@ struct Options {
     bool progress = false; // --progress: report progress even for a short render
     bool forceWindow = false;        // --window: a window or an error, never the headless fallback
     bool redrawContinuously = false; // --redraw-continuously (hidden, for the soak test)
-    bool samplesGiven = false;       // --spp was given: the window refines up to it, not to its cap
+    bool overlay = false;      // --overlay: the window opens with its overlay shown (H toggles it)
+    bool samplesGiven = false; // --spp was given: the window refines up to it, not to its cap
     CameraPose
         camera; // --camera-pos, --camera-target, --camera-up (default: the camera of docs/model.md)
     bool cameraTargetGiven = false; // else the window may move the orbit pivot along the view

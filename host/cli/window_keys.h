@@ -18,7 +18,7 @@ struct WindowKey {
     std::string_view detail; // more, for the docs' table only; may be empty
 };
 
-inline constexpr std::array<WindowKey, 13> kWindowKeys = {{
+inline constexpr std::array<WindowKey, 14> kWindowKeys = {{
     {"Esc or Q", "quits", ""},
     {"R", "reloads the scene file and the shaders", ""},
     {"P", "writes a screenshot PNG of what is shown now",
@@ -41,6 +41,10 @@ inline constexpr std::array<WindowKey, 13> kWindowKeys = {{
      "while held, across the scene in about 4 s"},
     {"Space/Left Control", "fly up and down",
      "while held (Control, not Shift, so that Shift+P leaves the camera where it is)"},
+    {"H", "shows or hides the overlay",
+     "(frame time, samples, rays per second, device; live switches for the sampler, `--spp`, "
+     "`--depth`, `--precision`, `--accel` and the method choices; the camera as options to "
+     "copy); never in P's screenshots; hidden unless `--overlay`"},
     {"I", "prints the story of the pixel under the mouse",
      "on stdout: its ray tree as the kernel traced it, as JSON, at the window's sample target, "
      "as `--pixel X,Y` prints it headless (docs/pixel_story.md)"},

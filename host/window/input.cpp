@@ -5,6 +5,7 @@
 // the keys named here are exactly the ones it lists.
 #include "window/input.h"
 
+#include "window/overlay.h"
 #include "window/reload.h"
 
 #include <algorithm>
@@ -50,15 +51,13 @@ std::string triple(glm::dvec3 v) {
 
 // O: the current view as command-line options, exact, to paste into a headless command.
 void printCameraOptions(const Viewer& viewer) {
-    const CameraPose& camera = viewer.camera;
-    std::fprintf(stderr, "Camera: --camera-pos %s --camera-target %s --camera-up %s --fov %s\n",
-                 triple(camera.position).c_str(), triple(camera.target).c_str(),
-                 triple(camera.up).c_str(), shortest(viewer.options->fovDegrees).c_str());
+    std::fprintf(stderr, "Camera: %s\n", cameraOptions(viewer).c_str());
 }
 
 void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     if (action != GLFW_PRESS) return;
     Viewer& viewer = viewerOf(window);
+    if (overlayWantsKeyboard(viewer)) return; // typing into the overlay
     switch (key) {
     case GLFW_KEY_ESCAPE:
     case GLFW_KEY_Q:
@@ -86,6 +85,10 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     case GLFW_KEY_V:
         toggleVsync(viewer);
         break;
+    case GLFW_KEY_H:
+        viewer.overlay.shown = !viewer.overlay.shown;
+        viewer.presentNeeded = true;
+        break;
     case GLFW_KEY_I:
         viewer.storyPending = true; // after the frame: the output image is traced by then
         break;
@@ -102,6 +105,9 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
 void onMouseButton(GLFWwindow* window, int button, int action, int) {
     Viewer& viewer = viewerOf(window);
     glfwGetCursorPos(window, &viewer.cursorX, &viewer.cursorY);
+    viewer.presentNeeded = viewer.presentNeeded || viewer.overlay.shown; // the panel reacts
+    // A press on the panel is the panel's; a release always ends a drag.
+    if (action == GLFW_PRESS && overlayWantsMouse(viewer)) return;
     if (button == GLFW_MOUSE_BUTTON_LEFT) viewer.leftDrag = action == GLFW_PRESS;
     if (button == GLFW_MOUSE_BUTTON_RIGHT) viewer.rightDrag = action == GLFW_PRESS;
 }
@@ -111,6 +117,7 @@ void onCursor(GLFWwindow* window, double x, double y) {
     const double dx = x - viewer.cursorX, dy = y - viewer.cursorY;
     viewer.cursorX = x;
     viewer.cursorY = y;
+    viewer.presentNeeded = viewer.presentNeeded || viewer.overlay.shown; // hover highlights
     if (viewer.leftDrag) {
         placePivot(viewer);
         setCamera(viewer, orbitCamera(viewer.camera, -dx * kOrbitPerPixel, dy * kOrbitPerPixel));
@@ -121,6 +128,7 @@ void onCursor(GLFWwindow* window, double x, double y) {
 
 void onScroll(GLFWwindow* window, double, double steps) {
     Viewer& viewer = viewerOf(window);
+    if (overlayWantsMouse(viewer)) return;
     placePivot(viewer);
     setCamera(viewer, dollyCamera(viewer.camera, steps));
 }
@@ -135,6 +143,12 @@ void onRefresh(GLFWwindow* window) {
 }
 
 } // namespace
+
+std::string cameraOptions(const Viewer& viewer) {
+    const CameraPose& camera = viewer.camera;
+    return "--camera-pos " + triple(camera.position) + " --camera-target " + triple(camera.target) +
+           " --camera-up " + triple(camera.up) + " --fov " + shortest(viewer.options->fovDegrees);
+}
 
 void installInputCallbacks(Viewer& viewer) {
     glfwSetWindowUserPointer(viewer.window, &viewer);

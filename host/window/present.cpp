@@ -6,6 +6,7 @@
 #include "base/scope_guard.h"
 #include "gpu/vk_check.h"
 #include "window/capture.h"
+#include "window/overlay.h"
 
 #include <algorithm>
 #include <chrono>
@@ -20,7 +21,9 @@ constexpr std::uint32_t kMaxSamplesPerFrame = 64;
 
 // Traces the next samples if any are owed, then blits the output image into the
 // swapchain image.
-void record(const Viewer& viewer, VkCommandBuffer commands, VkImage target, SampleRange samples) {
+void record(const Viewer& viewer, VkCommandBuffer commands, std::uint32_t imageIndex,
+            SampleRange samples) {
+    const VkImage target = viewer.swapchain.images[imageIndex];
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     VK_CHECK(vkBeginCommandBuffer(commands, &begin));
@@ -44,6 +47,13 @@ void record(const Viewer& viewer, VkCommandBuffer commands, VkImage target, Samp
     region.dstOffsets[1] = region.srcOffsets[1];
     vkCmdBlitImage(commands, output.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_NEAREST);
+    // The overlay draws over the swapchain image only, after the blit; its render pass
+    // hands the image to presentation.
+    if (viewer.overlay.shown && viewer.overlay.created) {
+        recordOverlay(viewer, commands, imageIndex);
+        VK_CHECK(vkEndCommandBuffer(commands));
+        return;
+    }
     // Hand the image to presentation once the blit has written it. The present waits on
     // the render-finished semaphore, which makes the writes visible, so no access follows.
     transitionImage(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
@@ -126,10 +136,17 @@ bool refreshSwapchain(Viewer& viewer) {
         resizeOutput(viewer.renderer, viewer.context, extent.width, extent.height);
         restartRefinement(viewer);
     }
+    // The overlay's render pass follows the swapchain's format, its framebuffers its images.
+    if (viewer.overlay.created)
+        overlaySwapchainChanged(viewer);
+    else
+        createOverlay(viewer);
     return true;
 }
 
 void drawFrame(Viewer& viewer) {
+    // First: a switch changed in the panel rebuilds the renderer and restarts the sum.
+    if (viewer.overlay.shown && viewer.overlay.created) buildOverlay(viewer);
     VkDevice device = viewer.context.device;
     Frame& frame = viewer.frames[viewer.frameIndex];
     VK_CHECK(vkWaitForFences(device, 1, &frame.done, VK_TRUE, UINT64_MAX));
@@ -147,7 +164,7 @@ void drawFrame(Viewer& viewer) {
     if (refining(viewer))
         samples = {viewer.samplesDone,
                    std::min(viewer.samplesPerFrame, viewer.sampleTarget - viewer.samplesDone)};
-    record(viewer, frame.commands, viewer.swapchain.images[imageIndex], samples);
+    record(viewer, frame.commands, imageIndex, samples);
 
     VkSemaphore renderFinished = viewer.swapchain.renderFinished[imageIndex];
     VkPipelineStageFlags waitStage =
@@ -186,6 +203,7 @@ void drawFrame(Viewer& viewer) {
         viewer.lastFrameMs =
             std::chrono::duration<double, std::milli>(Clock::now() - submitted).count();
         viewer.samplesDone += samples.count;
+        viewer.lastFrameSamples = samples.count;
         adaptSamplesPerFrame(viewer, viewer.lastFrameMs);
         // One line per finished image (the tests wait for it), none while soaking.
         if (!refining(viewer) && !viewer.continuous && viewer.benchFrames == 0)

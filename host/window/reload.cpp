@@ -3,6 +3,7 @@
 #include "window/reload.h"
 
 #include "cli/options.h"
+#include "cli/render_settings.h"
 #include "gpu/vk_check.h"
 #include "scene/scene_loader.h"
 #include "scene/warning_summary.h"
@@ -15,11 +16,11 @@ namespace {
 
 // A new renderer for scene with the current settings, replacing the old one only when it
 // could be made: a shader that does not compile keeps the last good pipeline.
-bool rebuildRenderer(Viewer& viewer, const Scene& scene) {
+bool rebuildRenderer(Viewer& viewer, const Scene& scene, const RenderSettings& settings) {
     VK_CHECK(vkDeviceWaitIdle(viewer.context.device));
     Renderer fresh;
     try {
-        createRenderer(fresh, viewer.context, scene, viewer.renderer.settings);
+        createRenderer(fresh, viewer.context, scene, settings);
     } catch (const std::exception& error) { // createRenderer released what it made
         std::fprintf(stderr, "%s\nKeeping the last good kernel and scene.\n", error.what());
         return false;
@@ -32,7 +33,7 @@ bool rebuildRenderer(Viewer& viewer, const Scene& scene) {
 }
 
 void reloadShaders(Viewer& viewer) {
-    if (rebuildRenderer(viewer, viewer.scene))
+    if (rebuildRenderer(viewer, viewer.scene, viewer.renderer.settings))
         std::fprintf(stderr, "Reloaded the shaders%s%s\n",
                      viewer.options->shaderDirectory.empty() ? "" : " from ",
                      viewer.options->shaderDirectory.string().c_str());
@@ -50,7 +51,7 @@ void reloadScene(Viewer& viewer) {
     }
     for (const std::string& line : summarisedWarnings(scene.warnings))
         std::fprintf(stderr, "%s\n", line.c_str());
-    if (rebuildRenderer(viewer, scene)) {
+    if (rebuildRenderer(viewer, scene, viewer.renderer.settings)) {
         viewer.scene = std::move(scene);
         std::fprintf(stderr, "Reloaded %s\n", viewer.options->scenePath.string().c_str());
     }
@@ -64,4 +65,23 @@ void pollWatchedFiles(Viewer& viewer) {
         reloadScene(viewer);
     else if (!viewer.shaderWatch.path.empty() && pathChanged(viewer.shaderWatch))
         reloadShaders(viewer);
+}
+
+bool applyOptions(Viewer& viewer, const Options& options) {
+    // The fields renderSettingsFrom takes from these options; the window's own (its size,
+    // camera and running sum) stay as they are.
+    RenderSettings settings = viewer.renderer.settings;
+    const RenderSettings given = renderSettingsFrom(options);
+    settings.depth = given.depth;
+    settings.acceleration = given.acceleration;
+    settings.kernel = given.kernel;
+    // Without --spp the window refines to its own cap, as it did.
+    const std::uint32_t target =
+        options.samplesGiven ? options.samplesPerPixel : viewer.sampleTarget;
+    settings.samplesPerPixel = target;
+    if (!rebuildRenderer(viewer, viewer.scene, settings)) return false;
+    viewer.liveOptions = options;
+    viewer.sampleTarget = target;
+    viewer.presentNeeded = true;
+    return true;
 }

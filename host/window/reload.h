@@ -14,3 +14,8 @@ void reloadScene(Viewer& viewer);
 
 // At most every kWatchInterval: reloads what was saved since the last look.
 void pollWatchedFiles(Viewer& viewer);
+
+// The overlay's switches: options with other kernel choices, depth, acceleration or sample
+// target, applied as the command line would apply them (a renderer built anew from them);
+// refinement restarts. Returns false, keeping the last good kernel, when it cannot be built.
+bool applyOptions(Viewer& viewer, const Options& options);

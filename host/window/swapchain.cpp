@@ -87,7 +87,9 @@ bool create(Swapchain& swapchain, const Context& context, VkSurfaceKHR surface,
     info.imageColorSpace = format.colorSpace;
     info.imageExtent = extent;
     info.imageArrayLayers = 1;
-    info.imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    // Transfer writes for the blit; a colour attachment for the overlay drawn over it (every
+    // surface supports that usage).
+    info.imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
     info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE; // one queue family does everything
     info.preTransform = capabilities.currentTransform;
     info.compositeAlpha = chooseCompositeAlpha(capabilities.supportedCompositeAlpha);

@@ -1,5 +1,6 @@
 // Presentation: the swapchain on the window's surface. The trace is blitted into
-// its images, so they are transfer destinations, never storage or colour targets.
+// its images, so they are transfer destinations; the overlay draws over them as colour
+// attachments; never storage images.
 #pragma once
 
 #include "gpu/context.h"

@@ -1,6 +1,7 @@
 // The interactive window's state, shared by the files that make it up: window.cpp (open,
 // frame loop, close), input.cpp (keys and mouse), present.cpp (trace, blit,
-// present), reload.cpp (hot reload) and capture.cpp (screenshot, bench).
+// present), reload.cpp (hot reload), capture.cpp (screenshot, bench) and overlay.cpp
+// (the ImGui panel).
 // Internal to the window: nothing outside those files includes it.
 #pragma once
 
@@ -20,6 +21,7 @@
 #include <chrono>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 using Clock = std::chrono::steady_clock;
 
@@ -32,14 +34,29 @@ struct Frame {
     VkFence done = VK_NULL_HANDLE;               // the submit finished; created signalled
 };
 
+// The overlay's Vulkan objects (window/overlay.h); ImGui holds the rest.
+struct Overlay {
+    bool created = false;
+    bool shown = false;                               // H toggles; --overlay opens it shown
+    VkDescriptorPool descriptorPool = VK_NULL_HANDLE; // the font texture's descriptor set
+    VkRenderPass renderPass = VK_NULL_HANDLE; // loads the blitted image, draws, hands it to present
+    VkFormat format = VK_FORMAT_UNDEFINED;    // the swapchain format renderPass was made for
+    std::vector<VkImageView> views;           // one per swapchain image
+    std::vector<VkFramebuffer> framebuffers;
+};
+
 struct Viewer {
-    const Options* options = nullptr;
+    // The command line's options as the window uses them now: the overlay's switches change
+    // this copy (liveOptions), so that P's headless command names what is shown.
+    Options liveOptions;
+    const Options* options = nullptr; // &liveOptions once open
     GLFWwindow* window = nullptr;
     Context context;
     VkSurfaceKHR surface = VK_NULL_HANDLE;
     Renderer renderer;
     Swapchain swapchain;
     Frame frames[kFramesInFlight];
+    Overlay overlay;
     std::uint32_t frameIndex = 0;
     std::string sceneName; // the title's first part
     Scene scene;           // the last scene that loaded, for shader reloads
@@ -49,6 +66,7 @@ struct Viewer {
     std::uint32_t samplesDone = 0;
     std::uint32_t samplesPerFrame = 1;
     double lastFrameMs = 0.0;
+    std::uint32_t lastFrameSamples = 0; // samples per pixel the last traced frame added
     Clock::time_point refineStart = Clock::now();
 
     CameraPose camera;

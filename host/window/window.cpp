@@ -6,7 +6,7 @@
 //
 // This file opens the window and its Vulkan objects, runs the frame loop and closes it
 // all again. The loop's pieces: input (keys, mouse), present (trace, blit,
-// present), reload (hot reload), capture (screenshot, --bench-window);
+// present), reload (hot reload), capture (screenshot, --bench-window), overlay (ImGui);
 // viewer.h holds the state they share.
 #include "window/window.h"
 
@@ -16,6 +16,7 @@
 #include "gpu/vk_check.h"
 #include "window/capture.h"
 #include "window/input.h"
+#include "window/overlay.h"
 #include "window/present.h"
 #include "window/reload.h"
 #include "window/story.h"
@@ -45,8 +46,10 @@ void onGlfwError(int code, const char* description) {
         glfwInitError = description;
 }
 
-void open(Viewer& viewer, const Options& options, const Scene& scene) {
-    viewer.options = &options;
+void open(Viewer& viewer, const Options& commandLine, const Scene& scene) {
+    viewer.liveOptions = commandLine;
+    viewer.options = &viewer.liveOptions;
+    Options& options = viewer.liveOptions;
     viewer.scene = scene;
     viewer.bounds = sceneBounds(scene);
     viewer.camera = options.camera;
@@ -59,6 +62,7 @@ void open(Viewer& viewer, const Options& options, const Scene& scene) {
         viewer.sampleTarget = std::max(viewer.sampleTarget, viewer.benchFrames + 1);
         viewer.vsync = false;
     }
+    viewer.overlay.shown = options.overlay;
     viewer.sceneWatch = watchPath(options.scenePath);
     if (!options.shaderDirectory.empty()) viewer.shaderWatch = watchPath(options.shaderDirectory);
 
@@ -134,6 +138,7 @@ void runLoop(Viewer& viewer) {
 // destroyContext removes device and instance together; its swapchain is gone by then.
 void close(Viewer& viewer) {
     if (viewer.context.device) vkDeviceWaitIdle(viewer.context.device);
+    destroyOverlay(viewer);
     destroyFrames(viewer);
     destroySwapchain(viewer.swapchain, viewer.context);
     destroyRenderer(viewer.renderer, viewer.context);

@@ -124,7 +124,7 @@ std::vector<std::vector<std::string>> optionSets() {
         {"a.scene", "--quiet"},
         {"a.scene", "-o", "-", "--quiet", "--progress"},
         {"a.scene", "--validate", "--no-cache", "--progress", "--window", "--redraw-continuously",
-         "--general-kernel", "--storage-reads"},
+         "--general-kernel", "--storage-reads", "--overlay"},
     };
     for (const char* seed : {"0", "7", "4294967295"})
         sets.push_back({"a.scene", "--seed", seed});

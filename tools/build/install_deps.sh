@@ -14,6 +14,7 @@ packages=(
     libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
     glslang-dev glslang-tools
     libglfw3-dev libglm-dev libstb-dev
+    libimgui-dev              # the window's overlay (Dear ImGui with its GLFW and Vulkan backends)
     libtinyexr-dev            # -o out.exr and image_diff's EXR input
     googletest libgtest-dev
     xvfb xauth x11-utils x11-apps xdotool

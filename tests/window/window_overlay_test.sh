@@ -1,0 +1,118 @@
+#!/usr/bin/env bash
+# The overlay (H, --overlay) under Xvfb: shown, it is on the window (the window's pixels
+# differ from headless) but never in P's screenshot (equal to headless --spp N, tolerance
+# 0); hidden with H, the window shows the headless pixels exactly; shown again, a real
+# click on its "grid" sampler button re-specialises the kernel, and the next refined P
+# screenshot equals headless --sampler grid; its "Copy" camera text is O's; Q quits with
+# status 0 and the validation layer stays silent throughout.
+#
+# usage: window_overlay_test.sh RAYTRACER SCENE OUTPUT_DIR IMAGE_DIFF
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/window_lib.sh"
+
+readonly WIDTH=320 HEIGHT=240 SPP=4
+# Where ImGui's default style (font 13 px, padding 8, frame padding 4x3, spacing 8x4) puts
+# the label of the "grid" radio button of the panel at (8, 8): the first row after the three
+# lines of figures and a separator, after the "sampler" label (window coordinates).
+readonly GRID_X=104 GRID_Y=100
+
+passed=0 failed=0
+pass() { echo "PASS: $*"; passed=$((passed + 1)); }
+fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
+
+headless() { # OUT.PNG ARGS...
+    local out=$1
+    shift
+    env -u DISPLAY timeout 120 "$raytracer" "$scene" -o "$out" --width $WIDTH --height $HEIGHT --spp $SPP "$@" \
+        > "$out.log" 2>&1 || { echo "FAIL: headless render $out (log $out.log)"; exit 1; }
+}
+
+# The path of the COUNTth screenshot that LOG reports.
+screenshot_path() { # LOG COUNT
+    grep -F "Screenshot: wrote" "$1" | sed -n "$2p" | sed -E 's/^Screenshot: wrote (.*) \([0-9]+x.*$/\1/'
+}
+
+# P, then the COUNTth screenshot compared with EXPECTED.PNG at tolerance 0.
+p_matches() { # PID ID LOG COUNT EXPECTED.PNG WHAT
+    local pid=$1 id=$2 log=$3 count=$4 expected=$5 what=$6 shot
+    press_key "$id" p
+    if ! wait_for_log "$pid" "$log" "Screenshot: wrote" "$count" 30; then
+        fail "$what: P wrote no screenshot (log $log)"
+        return
+    fi
+    shot=$(screenshot_path "$log" "$count")
+    if [[ -f $shot ]] && "$image_diff" "$expected" "$shot" --tolerance 0 --min-match 100 > "shot-$count-diff.txt" 2>&1; then
+        pass "$what: P wrote $shot, identical to $expected ($(cat "shot-$count-diff.txt"))"
+    else
+        fail "$what: P's $shot differs from $expected: $(cat "shot-$count-diff.txt" 2>/dev/null)"
+    fi
+}
+
+run_inside_xvfb() {
+    cd "$output_dir"
+    headless r2.png
+    headless grid.png --sampler grid
+    if "$image_diff" r2.png grid.png --tolerance 0 --min-match 100 > samplers-diff.txt 2>&1; then
+        fail "the r2 and grid renders are equal: the click could not be told apart"
+    fi
+    local log=window.log name id
+    name=$(basename "$scene")
+    timeout 200 "$raytracer" "$scene" --validate --overlay --width $WIDTH --height $HEIGHT --spp $SPP \
+        > "$log" 2>&1 &
+    local pid=$!
+    id=$(wait_for_window "$pid" "$name" 90) || { fail "no window (log $log)"; cat "$log"; exit 1; }
+    wait_for_log "$pid" "$log" "Refined: $SPP samples" 1 60 || fail "the window never refined (log $log)"
+
+    # Shown: on the window, not in P.
+    sleep 0.5
+    if window_matches "$id" r2.png shown-window; then
+        fail "--overlay: the window shows no overlay (it equals the headless render)"
+    else
+        pass "--overlay: the overlay is on the window ($(cat shown-window-diff.txt | head -c 200))"
+    fi
+    p_matches "$pid" "$id" "$log" 1 r2.png "overlay shown"
+
+    # Hidden: the window's pixels are the headless pixels.
+    press_key "$id" h
+    if window_matches "$id" r2.png hidden-window; then
+        pass "H hid the overlay: the window equals headless ($(cat hidden-window-diff.txt))"
+    else
+        fail "H: the window differs from headless with the overlay hidden: $(cat hidden-window-diff.txt)"
+    fi
+
+    # Shown again, a real click on "grid": the kernel is rebuilt with --sampler grid.
+    press_key "$id" h
+    timeout 10 xdotool windowfocus --sync "$id" || true
+    timeout 10 xdotool mousemove --window "$id" $GRID_X $GRID_Y || true
+    sleep 1
+    timeout 10 xdotool mousedown 1 || true
+    sleep 0.5
+    timeout 10 xdotool mouseup 1 || true
+    if wait_for_log "$pid" "$log" "Refined: $SPP samples" 2 60; then
+        p_matches "$pid" "$id" "$log" 2 grid.png "a click on the overlay's grid sampler"
+        if grep -F "Screenshot: wrote" "$log" | sed -n 2p | grep -qF -- "--sampler grid"; then
+            pass "the screenshot's headless command names --sampler grid"
+        else
+            fail "the screenshot's headless command does not name --sampler grid (log $log)"
+        fi
+    else
+        fail "the click on grid did not restart refinement (log $log)"
+    fi
+    expect_clean_quit "$pid" "$id" q "$log"
+    echo "window overlay test: $passed passed, $failed failed (files in $output_dir)"
+    ((failed == 0))
+}
+
+if [[ $# == 5 && $1 == --inside-xvfb ]]; then
+    raytracer=$2 scene=$3 output_dir=$4 image_diff=$5
+    run_inside_xvfb
+    exit
+fi
+if (($# != 4)); then
+    echo "usage: $0 RAYTRACER SCENE OUTPUT_DIR IMAGE_DIFF" >&2
+    exit 2
+fi
+require_window_tools
+mkdir -p "$3"
+rm -f "$3"/*.png "$3"/*.xwd "$3"/*.log "$3"/*.txt
+run_in_xvfb 280 1024x768x24 "$(absolute "$0")" --inside-xvfb "$(absolute "$1")" "$(absolute "$2")" "$(absolute "$3")" "$(absolute "$4")"
