@@ -165,6 +165,7 @@ bool applyFlyKeys(Viewer& viewer) {
     const double seconds =
         std::min(std::chrono::duration<double>(now - viewer.lastMove).count(), 0.1);
     viewer.lastMove = now;
+    if (overlayWantsKeyboard(viewer)) return false; // a field of the overlay has the keys
     auto held = [&](int key) { return glfwGetKey(viewer.window, key) == GLFW_PRESS ? 1.0 : 0.0; };
     // The arrow keys move as W A S D do.
     auto either = [&](int key, int arrow) { return std::max(held(key), held(arrow)); };

@@ -174,12 +174,14 @@ void buildSwitches(Viewer& viewer) {
     changed |= choiceButtons("sphere-test", sphereTestNames(), options.kernel.sphereTest);
     changed |= choiceButtons("triangle-test", triangleTestNames(), options.kernel.triangleTest);
     changed |= choiceButtons("offset", rayOffsetNames(), options.kernel.offset);
+    // Numbers are applied on Enter (or a step button): typing 256 should not build and
+    // render 2 and 25 first.
     int depth = int(options.depth);
-    if (ImGui::InputInt("depth", &depth) && depth >= 0) {
+    if (ImGui::InputInt("depth", &depth, 1, 1, ImGuiInputTextFlags_EnterReturnsTrue) &&
+        depth >= 0) {
         options.depth = std::uint32_t(depth);
         changed = true;
     }
-    // Applied on Enter only: typing 256 should not render 2 and 25 first.
     int target = int(viewer.sampleTarget);
     if (ImGui::InputInt("spp target", &target, 1, 16, ImGuiInputTextFlags_EnterReturnsTrue) &&
         target >= 1) {
