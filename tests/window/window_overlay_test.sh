@@ -3,8 +3,8 @@
 # differ from headless) but never in P's screenshot (equal to headless --spp N, tolerance
 # 0); hidden with H, the window shows the headless pixels exactly; shown again, a real
 # click on its "grid" sampler button re-specialises the kernel, and the next refined P
-# screenshot equals headless --sampler grid; its "Copy" camera text is O's; Q quits with
-# status 0 and the validation layer stays silent throughout.
+# screenshot equals headless --sampler grid; a resize with it shown refines again; Q quits
+# with status 0 and the validation layer stays silent throughout.
 #
 # usage: window_overlay_test.sh RAYTRACER SCENE OUTPUT_DIR IMAGE_DIFF
 set -euo pipefail
@@ -97,6 +97,13 @@ run_inside_xvfb() {
         fi
     else
         fail "the click on grid did not restart refinement (log $log)"
+    fi
+    # A resize with the overlay shown: its framebuffers follow the new swapchain.
+    timeout 10 xdotool windowsize "$id" 400 300 || true
+    if wait_for_log "$pid" "$log" "Refined: $SPP samples per pixel at 400x300" 1 60; then
+        pass "resized with the overlay shown: refined again at 400x300"
+    else
+        fail "no refined frame at 400x300 after the resize (log $log)"
     fi
     expect_clean_quit "$pid" "$id" q "$log"
     echo "window overlay test: $passed passed, $failed failed (files in $output_dir)"
