@@ -11,6 +11,7 @@
 #include "gpu/context.h"
 #include "render/renderer.h"
 #include "scene/camera.h"
+#include "scene/obj_scene.h"
 #include "scene/scene.h"
 #include "window/swapchain.h"
 
@@ -69,6 +70,7 @@ struct Viewer {
     bool screenshotPending = false;     // Shift+P: write it once refinement is done
     bool screenshotViewChanged = false; // the camera moved since Shift+P (said once)
     bool storyPending = false;          // I: print the pixel story under the mouse after the frame
+    bool rigStale = false;   // the camera moved and the scene's lights are an OBJ model's rig
     bool continuous = false; // --redraw-continuously: restart the sum every frame (soak test)
 
     // --bench-window N: frames timed after the first.
@@ -100,5 +102,17 @@ inline void setCamera(Viewer& viewer, const CameraPose& camera) {
     }
     viewer.camera = camera;
     setCamera(viewer.renderer, camera);
+    // An OBJ model's rig follows the camera; the lights are rewritten once before the next
+    // trace (placeRigForCamera), not at every mouse event.
+    if (viewer.scene.lightRig) viewer.rigStale = true;
     restartRefinement(viewer);
+}
+
+// The rig placed again for the current camera, when it moved: the few lights are rewritten
+// in the scene buffer; the kernel and the rest of the scene stay.
+inline void placeRigForCamera(Viewer& viewer) {
+    if (!viewer.rigStale) return;
+    viewer.rigStale = false;
+    placeLightRig(viewer.scene, viewer.camera);
+    setLights(viewer.renderer, viewer.context, viewer.scene.lights);
 }

@@ -7,7 +7,8 @@
 # camera move retargets it and that it was dropped when the window closes first;
 # I prints the story of the pixel under the mouse, the JSON of headless --pixel;
 # V recreates the swapchain; a mouse drag moves the camera and C and Home reset it to the
-# default camera; Q quits with status 0 and the validation layer stays silent.
+# default camera; Q quits with status 0 and the validation layer stays silent; an OBJ model's
+# light rig follows an orbit (the window equals the headless render of that camera).
 #
 # usage: window_progressive_test.sh RAYTRACER SCENE OUTPUT_DIR IMAGE_DIFF
 set -euo pipefail
@@ -162,6 +163,7 @@ run_inside_xvfb() {
 
     expect_clean_quit "$pid" "$id" q "$log"
     mid_refinement
+    model_rig
     echo "window progressive test: $passed passed, $failed failed (files in $output_dir)"
     ((failed == 0))
 }
@@ -211,6 +213,45 @@ mid_refinement() {
     else
         fail "no 'Screenshot: dropped' line on closing (log $log)"
     fi
+}
+
+# An OBJ model's light rig follows the window's camera: after an orbit the window equals the
+# headless render of the camera that O prints (tolerance 0), whose rig is placed for it.
+model_rig() {
+    local log=window-model.log id model=rig_cube.obj
+    printf 'v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n%s\n' \
+        'f 1 4 3 2
+f 1 2 6 5
+f 2 3 7 6
+f 3 4 8 7
+f 4 1 5 8
+f 5 6 7 8' > "$model"
+    timeout 150 "$raytracer" "$model" --validate --width $WIDTH --height $HEIGHT --spp $SPP > "$log" 2>&1 &
+    local pid=$!
+    id=$(wait_for_window "$pid" "$model" 90) || { fail "no model window (log $log)"; cat "$log"; return; }
+    wait_for_log "$pid" "$log" "Refined: $SPP samples" 1 60 || fail "the model window never refined (log $log)"
+    local x=$((WIDTH / 2)) y=$((HEIGHT / 2)) refined
+    refined=$(grep -cF "Refined: $SPP samples" "$log")
+    timeout 10 xdotool mousemove --window "$id" $x $y mousedown 1 mousemove --window "$id" $((x + 80)) $((y + 10)) \
+        sleep 0.2 mousemove --window "$id" $((x + 160)) $((y + 20)) sleep 0.2 mouseup 1 || true
+    wait_for_log "$pid" "$log" "Refined: $SPP samples" $((refined + 1)) 60 || fail "no refinement after the orbit (log $log)"
+    sleep 1
+    press_key "$id" o
+    if ! wait_for_log "$pid" "$log" "Camera: --camera-pos" 1 20; then
+        fail "O printed no camera for the model (log $log)"
+        expect_clean_quit "$pid" "$id" q "$log"
+        return
+    fi
+    local -a camera
+    read -r -a camera <<< "$(grep -F "Camera: --camera-pos" "$log" | tail -n 1 | sed -E 's/^Camera: //')"
+    local scene=$model # headless renders $scene
+    headless orbited-model.png "${camera[@]}"
+    if window_matches "$id" orbited-model.png orbited-model-window; then
+        pass "model rig: after an orbit the window equals the headless render of that camera (${camera[*]})"
+    else
+        fail "model rig: the orbited window differs from headless ${camera[*]} (see orbited-model-window.png)"
+    fi
+    expect_clean_quit "$pid" "$id" q "$log"
 }
 
 if [[ $# == 5 && $1 == --inside-xvfb ]]; then
