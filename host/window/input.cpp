@@ -86,8 +86,10 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     case GLFW_KEY_V:
         toggleVsync(viewer);
         break;
-    case GLFW_KEY_I:
-        viewer.storyPending = true; // after the frame: the output image is traced by then
+    case GLFW_KEY_I: // after the frame: the output image is traced by then
+        glfwGetCursorPos(window, &viewer.storyX, &viewer.storyY);
+        viewer.storyPending = true;
+        viewer.storyClicked = false;
         break;
     case GLFW_KEY_C:
     case GLFW_KEY_HOME:
@@ -102,6 +104,15 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
 void onMouseButton(GLFWwindow* window, int button, int action, int) {
     Viewer& viewer = viewerOf(window);
     glfwGetCursorPos(window, &viewer.cursorX, &viewer.cursorY);
+    // A left click with I held inspects the clicked pixel and starts no orbit.
+    const bool inspecting = glfwGetKey(window, GLFW_KEY_I) == GLFW_PRESS;
+    if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS && inspecting) {
+        viewer.storyX = viewer.cursorX;
+        viewer.storyY = viewer.cursorY;
+        viewer.storyPending = true;
+        viewer.storyClicked = true;
+        return;
+    }
     if (button == GLFW_MOUSE_BUTTON_LEFT) viewer.leftDrag = action == GLFW_PRESS;
     if (button == GLFW_MOUSE_BUTTON_RIGHT) viewer.rightDrag = action == GLFW_PRESS;
 }

@@ -69,7 +69,12 @@ struct Viewer {
     bool snapshotNow = false;           // P: write what is shown, after this frame
     bool screenshotPending = false;     // Shift+P: write it once refinement is done
     bool screenshotViewChanged = false; // the camera moved since Shift+P (said once)
-    bool storyPending = false;          // I: print the pixel story under the mouse after the frame
+    // I: print the pixel story of the pixel at (storyX, storyY), window units, after the
+    // frame: under the mouse when I was pressed, or where the left button was clicked with
+    // I held (storyClicked).
+    bool storyPending = false;
+    bool storyClicked = false;
+    double storyX = 0.0, storyY = 0.0;
     bool rigStale = false;   // the camera moved and the scene's lights are an OBJ model's rig
     bool continuous = false; // --redraw-continuously: restart the sum every frame (soak test)
 

@@ -5,7 +5,8 @@
 # prints the camera as options; mid-refinement (a second window), P writes what is shown
 # with its sample count K in its name, equal to headless --spp K, Shift+P waits, says when a
 # camera move retargets it and that it was dropped when the window closes first;
-# I prints the story of the pixel under the mouse, the JSON of headless --pixel;
+# I prints the story of the pixel under the mouse, the JSON of headless --pixel, and so does a
+# left click with I held for the clicked pixel, without orbiting;
 # V recreates the swapchain; a mouse drag moves the camera and C and Home reset it to the
 # default camera; Q quits with status 0 and the validation layer stays silent; an OBJ model's
 # light rig follows an orbit (the window equals the headless render of that camera).
@@ -106,6 +107,30 @@ run_inside_xvfb() {
         fi
     else
         fail "I printed no story of pixel 50,40 (log $log)"
+    fi
+
+    # A left click with I held prints the story of the clicked pixel, not the one under the
+    # mouse when I went down, and starts no orbit (the view stays the headless image).
+    env -u DISPLAY timeout 120 "$raytracer" "$scene" --pixel 120,90 --width $WIDTH --height $HEIGHT --spp $SPP \
+        "${CAMERA[@]}" > story-click-headless.json 2> story-click-headless.log || fail "headless --pixel 120,90 (log story-click-headless.log)"
+    timeout 10 xdotool keydown --window "$id" i sleep 0.3 mousemove --window "$id" 120 90 sleep 0.3 click 1 \
+        sleep 0.3 keyup --window "$id" i || true
+    if wait_for_log "$pid" "$log" "Pixel story: clicked pixel 120,90 printed on stdout" 1 30; then
+        # The last story in the log is the click's.
+        awk '/^\{"renderer": "gpu"/ { story = ""; inside = 1 } inside { story = story $0 "\n" }
+             /"pixel_8bit"/ { if (inside) last = story; inside = 0 } END { printf "%s", last }' "$log" > story-click-window.json
+        if [[ -s story-click-headless.json ]] && cmp -s story-click-headless.json story-click-window.json; then
+            pass "I held + left click printed the story of pixel 120,90, identical to headless --pixel 120,90"
+        else
+            fail "I + click: the window's story (story-click-window.json) differs from headless --pixel (story-click-headless.json)"
+        fi
+    else
+        fail "I + click printed no story of the clicked pixel 120,90 (log $log)"
+    fi
+    if window_matches "$id" moved.png click-window; then
+        pass "I + click started no orbit: the view is unchanged"
+    else
+        fail "I + click moved the camera (see click-window.png)"
     fi
 
     press_key "$id" v
