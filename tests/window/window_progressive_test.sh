@@ -276,6 +276,16 @@ f 5 6 7 8' > "$model"
     else
         fail "model rig: the orbited window differs from headless ${camera[*]} (see orbited-model-window.png)"
     fi
+    # Lights fixed in the world (the default camera's scene, saved) light that view otherwise:
+    # the match above is the rig following, not a rig that never moved.
+    env -u DISPLAY timeout 60 "$raytracer" "$model" --save-scene rig_cube.scene > rig-save.log 2>&1 ||
+        fail "--save-scene of the model (log rig-save.log)"
+    scene=rig_cube.scene headless fixed-lights-model.png "${camera[@]}"
+    if ! "$image_diff" orbited-model.png fixed-lights-model.png --tolerance 0 --min-match 100 > fixed-diff.txt 2>&1; then
+        pass "model rig: the default camera's lights, fixed in the world, would light that view otherwise"
+    else
+        fail "model rig: the fixed lights give the same image, so the test shows nothing"
+    fi
     expect_clean_quit "$pid" "$id" q "$log"
 }
 
