@@ -69,6 +69,8 @@ void renderScene(const Options& options, const Context& context, KernelCache& ke
         reservePngOutput(output);
         OnFailure removeOutput([&] { releasePngOutput(output); });
         setCamera(renderer, frame.camera);
+        if (scene.lightRig) // an OBJ model's rig follows each frame's camera
+            setLights(renderer, context, lightRig(*scene.lightRig, frame.camera));
         setFieldOfView(renderer, frame.fovDegrees);
         renderHeadlessFrame(target, context, renderer,
                             options.quiet      ? ProgressMode::Off

@@ -20,8 +20,10 @@ material get a light grey default.
 The scene's camera sits at the origin looking down -z. --fit scales the model
 (uniformly) to 1.5 units across and puts it straight ahead, as far away as
 makes it fill 80% of the view. --ground adds a matte floor under it; --rig
-places key, fill and rim lights around it; otherwise one white light sits above
-the camera unless --light is given (it may be repeated).
+places key, fill and rim lights around it for the camera of --camera-pos,
+--camera-target and --camera-up (Raytracer's options, default the origin
+looking down -z); otherwise one white light sits above the camera unless
+--light is given (it may be repeated).
 
 Raytracer reads OBJ files itself by the same rules (`Raytracer model.obj`, and
 `--save-scene` writes the scene it built: by default the same text as this
@@ -347,13 +349,20 @@ class Placement:
         return tuple((p[i] - self.centre[i]) * self.scale + self.offset[i] for i in range(3))
 
 
-def light_rig(placement):
+def light_rig(placement, eye, target, up_hint):
     """Key (front left, high), fill (front right, low, dim) and rim (behind, high) lights,
-    at distances in units of the model's radius from its centre, relative to the default
-    camera's right, up and backward axes."""
+    at distances in units of the model's radius from its centre along the camera's right,
+    up and backward axes as seen from the camera (eye, target, up_hint) looking at the
+    centre: back from the centre to the eye, right perpendicular to back and up_hint."""
     centre = tuple((placement.low[i] + placement.high[i]) / 2.0 for i in range(3))
     radius = length(sub(placement.high, placement.low)) / 2.0
-    right, up, back = (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)
+    back = normalize(sub(eye, centre))
+    if back == (0.0, 0.0, 0.0):  # the eye at the centre: the camera's own backward axis
+        back = normalize(sub(eye, target))
+    right = normalize(cross(up_hint, back))
+    if right == (0.0, 0.0, 0.0):  # seen along up: the camera's own right
+        right = normalize(cross(sub(target, eye), up_hint))
+    up = cross(back, right)
     lights = []
     for r, u, b, brightness in ((-2.0, 2.5, 2.5, 0.8), (2.5, 0.5, 2.0, 0.3), (0.5, 3.0, -3.0, 0.5)):
         offset = tuple(right[i] * (radius * r) + up[i] * (radius * u) + back[i] * (radius * b) for i in range(3))
@@ -386,12 +395,14 @@ def vec(v):
 
 
 def write_scene(out, model, settings):
-    """settings: up, crease, fit, fov, aspect, ground, rig, lights, ambient."""
+    """settings: up, crease, fit, fov, aspect, ground, rig, camera_pos, camera_target,
+    camera_up, lights, ambient."""
     positions = [turn_up(p, settings.up) for p in model.positions]
     normals = [turn_up(n, settings.up) for n in model.normals]
     placement = Placement(positions, settings.fit, settings.fov, settings.aspect)
     smooth = SmoothNormals(model, positions, settings.crease)
-    lights = light_rig(placement) if settings.rig else settings.lights
+    lights = (light_rig(placement, settings.camera_pos, settings.camera_target, settings.camera_up)
+              if settings.rig else settings.lights)
 
     triangles = []
     for corners, material, _line, face in model.triangles:
@@ -473,6 +484,12 @@ def main(argv=None):
     parser.add_argument("--ground", action="store_true", help="a matte floor under the model, for its shadow")
     parser.add_argument("--rig", action="store_true",
                         help="key, fill and rim lights around the model instead of --light's")
+    parser.add_argument("--camera-pos", type=triple, default=(0.0, 0.0, 0.0), metavar="X,Y,Z",
+                        help="the camera --rig is placed for, as Raytracer's option (default 0,0,0)")
+    parser.add_argument("--camera-target", type=triple, metavar="X,Y,Z",
+                        help="the point it looks at (default 0,0,-1 from the eye)")
+    parser.add_argument("--camera-up", type=triple, default=(0.0, 1.0, 0.0), metavar="X,Y,Z",
+                        help="its up direction (default 0,1,0)")
     parser.add_argument("--fov", type=float, default=60.0, help="the view --fit fills: vertical degrees (default 60)")
     parser.add_argument("--width", type=int, default=640, help="the view --fit fills: width (default 640)")
     parser.add_argument("--height", type=int, default=480, help="the view --fit fills: height (default 480)")
@@ -482,7 +499,8 @@ def main(argv=None):
     glued = []
     while argv:
         arg = argv.pop(0)
-        glued.append(arg + "=" + argv.pop(0) if arg in ("--light", "--light-color", "--light-colour", "--ambient", "--up") and argv else arg)
+        glued.append(arg + "=" + argv.pop(0) if arg in ("--light", "--light-color", "--light-colour", "--ambient", "--up",
+                                                   "--camera-pos", "--camera-target", "--camera-up") and argv else arg)
     args = parser.parse_args(glued)
     if args.rig and args.light:
         parser.error("--rig places its own lights: give --rig or --light, not both")
@@ -494,6 +512,8 @@ def main(argv=None):
         model = read_obj(args.obj, warn)
         args.lights = [(p, args.light_color) for p in (args.light or [(0.0, 4.0, 0.0)])]
         args.aspect = args.width / args.height
+        if args.camera_target is None:  # as Raytracer: straight down -z from the eye
+            args.camera_target = add(args.camera_pos, (0.0, 0.0, -1.0))
         if args.out:
             temporary = args.out + ".tmp"
             with open(temporary, "w", encoding="ascii", newline="\n") as out:

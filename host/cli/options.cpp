@@ -240,6 +240,7 @@ ObjSceneSetup objSceneSetup(const Options& options) {
     setup.ground = options.ground;
     setup.fovDegrees = options.fovDegrees;
     setup.aspect = double(options.width) / double(options.height);
+    setup.camera = options.camera; // a batch's frames place the rig again for their cameras
     return setup;
 }
 

@@ -18,7 +18,7 @@ struct WindowKey {
     std::string_view detail; // more, for the docs' table only; may be empty
 };
 
-inline constexpr std::array<WindowKey, 14> kWindowKeys = {{
+inline constexpr std::array<WindowKey, 15> kWindowKeys = {{
     {"Esc or Q", "quits", ""},
     {"R", "reloads the scene file and the shaders", ""},
     {"P", "writes a screenshot PNG of what is shown now",
@@ -48,6 +48,9 @@ inline constexpr std::array<WindowKey, 14> kWindowKeys = {{
     {"I", "prints the story of the pixel under the mouse",
      "on stdout: its ray tree as the kernel traced it, as JSON, at the window's sample target, "
      "as `--pixel X,Y` prints it headless (docs/pixel_story.md)"},
+    {"I + left click", "prints the story of the clicked pixel",
+     "(hold I down and click; the click starts no orbit), as I does for the pixel under the "
+     "mouse; stderr says `Pixel story: clicked pixel X,Y printed on stdout`"},
 }};
 
 // --help's section: a heading, then one "  KEYS EFFECT" line per entry.

@@ -233,6 +233,10 @@ void setCamera(Renderer& renderer, const CameraPose& camera) {
     renderer.settings.camera = camera;
 }
 
+void setLights(Renderer& renderer, const Context& context, const std::vector<Light>& lights) {
+    updateGpuLights(context, renderer.scene, packLights(lights));
+}
+
 void setFieldOfView(Renderer& renderer, double degrees) {
     renderer.settings.fovDegrees = degrees;
 }

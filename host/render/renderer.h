@@ -110,6 +110,10 @@ void recordTrace(const Renderer& renderer, VkCommandBuffer commands, SampleRange
 // Points the camera elsewhere (the window's controls); takes effect at the next record.
 void setCamera(Renderer& renderer, const CameraPose& camera);
 
+// Replaces the scene's lights with as many others (an OBJ model's rig placed for a new
+// camera), rewriting only their part of the scene buffer; waits for the device to be idle.
+void setLights(Renderer& renderer, const Context& context, const std::vector<Light>& lights);
+
 // The vertical field of view of the next record (a frame of --camera-path).
 void setFieldOfView(Renderer& renderer, double degrees);
 

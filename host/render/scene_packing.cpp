@@ -192,8 +192,14 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
                 glm::dvec4(glm::dvec3(vertex.exactPosition), double(vertex.material)));
     }
 
-    for (const Light& light : scene.lights)
-        packed.lights.push_back({toVec4(light.position), toVec4(light.color)});
+    packed.lights = packLights(scene.lights);
+    return packed;
+}
+
+std::vector<gpu::GpuLight> packLights(const std::vector<Light>& lights) {
+    std::vector<gpu::GpuLight> packed;
+    for (const Light& light : lights)
+        packed.push_back({toVec4(light.position), toVec4(light.color)});
     return packed;
 }
 

@@ -78,6 +78,9 @@ PackedScene packScene(const Scene& scene, Acceleration acceleration, Precision p
 // vertices shared; no hierarchy.
 PackedScene packSceneInFileOrder(const Scene& scene, Precision precision = Precision::Fp32);
 
+// The lights as the GPU holds them (position, colour), in order.
+std::vector<gpu::GpuLight> packLights(const std::vector<Light>& lights);
+
 // The material index of vertex v, from its position's w.
 std::uint32_t vertexMaterial(const PackedScene& packed, std::size_t v);
 

@@ -138,6 +138,29 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
     return scene;
 }
 
+void updateGpuLights(const Context& context, GpuScene& scene,
+                     const std::vector<gpu::GpuLight>& lights) {
+    if (lights.size() != scene.lightCount)
+        throw std::logic_error("updateGpuLights: " + std::to_string(lights.size()) +
+                               " lights for a scene uploaded with " +
+                               std::to_string(scene.lightCount));
+    if (lights.empty()) return;
+    VK_CHECK(vkDeviceWaitIdle(context.device)); // no trace in flight reads the old lights
+    const VkDescriptorBufferInfo& range = scene.ranges[BINDING_LIGHTS];
+    const VkDeviceSize bytes = lights.size() * sizeof(gpu::GpuLight);
+    runOneTimeCommands(context, [&](VkCommandBuffer commands) {
+        // A few lights: well under vkCmdUpdateBuffer's 65536 bytes, no staging buffer needed.
+        vkCmdUpdateBuffer(commands, scene.buffer.buffer, range.offset, bytes, lights.data());
+        // The kernels of later submissions read them (storage or uniform texel buffer).
+        VkMemoryBarrier written{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+        written.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        written.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+        vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                             VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &written, 0, nullptr, 0,
+                             nullptr);
+    });
+}
+
 void destroyGpuScene(const Context& context, GpuScene& scene) {
     for (VkBufferView view : scene.texelViews)
         if (view) vkDestroyBufferView(context.device, view, nullptr);

@@ -27,4 +27,10 @@ struct GpuScene {
 // exceeds maxTexelBufferElements (storageReadsNote).
 GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wantTexelReads = true);
 
+// Writes new lights over the uploaded ones, as many as before (an OBJ model's rig placed
+// for another camera): only the lights' range of the buffer is rewritten, and the kernel
+// and the rest of the scene stay. Waits for the device to be idle first, and until done.
+void updateGpuLights(const Context& context, GpuScene& scene,
+                     const std::vector<gpu::GpuLight>& lights);
+
 void destroyGpuScene(const Context& context, GpuScene& scene);

@@ -137,24 +137,8 @@ Placement placementOf(const std::vector<glm::dvec3>& positions, const ObjSceneSe
     return placement;
 }
 
-// Key (front left, high), fill (front right, low, dim) and rim (behind, high) lights at
-// distances in units of the model's radius from its centre, relative to the default
-// camera's right, up and backward axes.
-std::vector<Light> lightRig(const Placement& placement) {
-    const glm::dvec3 centre = (placement.low + placement.high) / 2.0;
-    const double radius = length(placement.high - placement.low) / 2.0;
-    const glm::dvec3 right(1.0, 0.0, 0.0), up(0.0, 1.0, 0.0), back(0.0, 0.0, 1.0);
-    struct Place {
-        double right, up, back, brightness;
-    };
-    const Place places[] = {{-2.0, 2.5, 2.5, 0.8}, {2.5, 0.5, 2.0, 0.3}, {0.5, 3.0, -3.0, 0.5}};
-    std::vector<Light> lights;
-    for (const Place& p : places) {
-        const glm::dvec3 offset =
-            right * (radius * p.right) + up * (radius * p.up) + back * (radius * p.back);
-        lights.push_back(Light{centre + offset, glm::dvec3(p.brightness), 0});
-    }
-    return lights;
+LightRigAnchor anchorOf(const Placement& placement) {
+    return {(placement.low + placement.high) / 2.0, length(placement.high - placement.low) / 2.0};
 }
 
 // A floor under the model: a square kGroundSpan model sizes across, centred below it, at
@@ -186,6 +170,36 @@ void addGround(Scene& scene, const Placement& placement) {
 
 } // namespace
 
+std::vector<Light> lightRig(const LightRigAnchor& anchor, const CameraPose& camera) {
+    // From the model towards the eye; an eye at the centre uses the camera's own backward axis.
+    glm::dvec3 back = normalizedOrZero(camera.position - anchor.centre);
+    if (back == glm::dvec3(0.0)) back = normalizedOrZero(camera.position - camera.target);
+    // Seen from straight along the camera's up, the camera's own right (then perpendicular
+    // to back) keeps the frame turning with the view.
+    glm::dvec3 right = normalizedOrZero(glm::cross(camera.up, back));
+    if (right == glm::dvec3(0.0))
+        right = normalizedOrZero(glm::cross(camera.target - camera.position, camera.up));
+    const glm::dvec3 up = glm::cross(back, right);
+    // For the default camera these are the unit axes, up to rounding where the fitted
+    // model's centre is a hair off the line of sight.
+    struct Place {
+        double right, up, back, brightness;
+    };
+    const Place places[] = {{-2.0, 2.5, 2.5, 0.8}, {2.5, 0.5, 2.0, 0.3}, {0.5, 3.0, -3.0, 0.5}};
+    const double radius = anchor.radius;
+    std::vector<Light> lights;
+    for (const Place& p : places) {
+        const glm::dvec3 offset =
+            right * (radius * p.right) + up * (radius * p.up) + back * (radius * p.back);
+        lights.push_back(Light{anchor.centre + offset, glm::dvec3(p.brightness), 0});
+    }
+    return lights;
+}
+
+void placeLightRig(Scene& scene, const CameraPose& camera) {
+    if (scene.lightRig) scene.lights = lightRig(*scene.lightRig, camera);
+}
+
 Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std::string& fileName) {
     std::vector<glm::dvec3> positions, normals;
     for (const glm::dvec3& p : model.positions)
@@ -201,9 +215,12 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
 
     Scene scene;
     scene.ambient = setup.ambient;
-    scene.lights = setup.lightRig
-                       ? lightRig(placement)
-                       : std::vector<Light>{Light{glm::dvec3(0.0, 4.0, 0.0), glm::dvec3(1.0), 0}};
+    if (setup.lightRig) {
+        scene.lightRig = anchorOf(placement);
+        scene.lights = lightRig(*scene.lightRig, setup.camera);
+    } else {
+        scene.lights = {Light{glm::dvec3(0.0, 4.0, 0.0), glm::dvec3(1.0), 0}};
+    }
     scene.warnings = model.warnings;
     std::size_t degenerate = 0;
     for (const ObjTriangle& source : model.triangles) {

@@ -3,6 +3,7 @@
 // rule of docs/models.md that tools/obj_to_scene.py follows too, operation for operation.
 #pragma once
 
+#include "scene/camera.h"
 #include "scene/obj_model.h"
 #include "scene/scene.h"
 
@@ -25,11 +26,23 @@ struct ObjSceneSetup {
     double aspect = 640.0 / 480.0;
     bool ground = true;   // a wide floor under the model, for its shadow
     bool lightRig = true; // key, fill and rim lights around the model; else one at (0, 4, 0)
+    // The camera the rig is placed for (--camera-*): the model's place does not depend on
+    // it (the fit is for the default camera), its lights do.
+    CameraPose camera;
     glm::dvec3 ambient{0.1};
 };
 
 inline constexpr double kFitSize = 1.5;
 inline constexpr double kFrameShare = 0.8;
+
+// The key, fill and rim lights for a camera: at distances in units of the anchor's radius
+// from its centre along the camera's right, up and backward axes as seen from the camera
+// looking at the centre (back: from the centre to the eye; right: perpendicular to back and
+// the camera's up), so every camera pose sees the model lit as the default camera does.
+std::vector<Light> lightRig(const LightRigAnchor& anchor, const CameraPose& camera);
+
+// Places a scene's rig (scene.lightRig) again for camera; a scene without one is left alone.
+void placeLightRig(Scene& scene, const CameraPose& camera);
 
 // Triangles with two corners at one position, or of no area, are left out, and counted in
 // a warning; fileName names the model in it.

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,11 +44,22 @@ struct Light {
     std::int64_t line = 0;
 };
 
+// Where an OBJ model's light rig (scene/obj_scene.h) hangs: the model's centre and radius.
+// The rig's lights are placed from these and a camera, so that whoever renders the scene
+// from another camera (a batch frame, the window) can place them again for it.
+struct LightRigAnchor {
+    glm::dvec3 centre{0.0};
+    double radius = 0.0;
+};
+
 struct Scene {
     glm::dvec3 ambient{0.0};
     std::vector<Sphere> spheres;
     std::vector<Triangle> triangles;
     std::vector<Light> lights;
+    // Set when lights are an OBJ model's rig, which follows the camera (docs/models.md);
+    // a scene file's lights stay where the file puts them.
+    std::optional<LightRigAnchor> lightRig;
     // Accepted oddities ("file:line: warning: ..."), printed by the caller.
     std::vector<std::string> warnings;
 };

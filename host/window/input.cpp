@@ -89,8 +89,10 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
         viewer.overlay.shown = !viewer.overlay.shown;
         viewer.presentNeeded = true;
         break;
-    case GLFW_KEY_I:
-        viewer.storyPending = true; // after the frame: the output image is traced by then
+    case GLFW_KEY_I: // after the frame: the output image is traced by then
+        glfwGetCursorPos(window, &viewer.storyX, &viewer.storyY);
+        viewer.storyPending = true;
+        viewer.storyClicked = false;
         break;
     case GLFW_KEY_C:
     case GLFW_KEY_HOME:
@@ -108,6 +110,15 @@ void onMouseButton(GLFWwindow* window, int button, int action, int) {
     viewer.presentNeeded = viewer.presentNeeded || viewer.overlay.shown; // the panel reacts
     // A press on the panel is the panel's; a release always ends a drag.
     if (action == GLFW_PRESS && overlayWantsMouse(viewer)) return;
+    // A left click with I held inspects the clicked pixel and starts no orbit.
+    const bool inspecting = glfwGetKey(window, GLFW_KEY_I) == GLFW_PRESS;
+    if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS && inspecting) {
+        viewer.storyX = viewer.cursorX;
+        viewer.storyY = viewer.cursorY;
+        viewer.storyPending = true;
+        viewer.storyClicked = true;
+        return;
+    }
     if (button == GLFW_MOUSE_BUTTON_LEFT) viewer.leftDrag = action == GLFW_PRESS;
     if (button == GLFW_MOUSE_BUTTON_RIGHT) viewer.rightDrag = action == GLFW_PRESS;
 }

@@ -51,6 +51,7 @@ void reloadScene(Viewer& viewer) {
     }
     for (const std::string& line : summarisedWarnings(scene.warnings))
         std::fprintf(stderr, "%s\n", line.c_str());
+    placeLightRig(scene, viewer.camera); // a model's rig for where the window's camera is now
     if (rebuildRenderer(viewer, scene, viewer.renderer.settings)) {
         viewer.scene = std::move(scene);
         std::fprintf(stderr, "Reloaded %s\n", viewer.options->scenePath.string().c_str());

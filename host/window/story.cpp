@@ -8,13 +8,13 @@
 
 void printStoryUnderCursor(Viewer& viewer) {
     viewer.storyPending = false;
-    double cursorX = 0, cursorY = 0;
     int windowWidth = 0, windowHeight = 0;
-    glfwGetCursorPos(viewer.window, &cursorX, &cursorY);
     glfwGetWindowSize(viewer.window, &windowWidth, &windowHeight);
     const Image& output = viewer.renderer.outputImage;
-    const std::optional<glm::uvec2> pixel =
-        pixelUnderCursor(cursorX, cursorY, windowWidth, windowHeight, output.width, output.height);
+    const std::optional<glm::uvec2> pixel = pixelUnderCursor(
+        viewer.storyX, viewer.storyY, windowWidth, windowHeight, output.width, output.height);
+    // The click's line says so: a test tells a click's story from the I key's by it.
+    const char* which = viewer.storyClicked ? "clicked pixel" : "pixel";
     if (!pixel) {
         std::fprintf(stderr, "Pixel story: the mouse is not over the image\n");
         return;
@@ -35,7 +35,8 @@ void printStoryUnderCursor(Viewer& viewer) {
                                  settings.depth};
         std::fputs(pixelStoryJson(story, viewer.renderer.sources, header).c_str(), stdout);
         std::fflush(stdout);
-        std::fprintf(stderr, "Pixel story: pixel %u,%u printed on stdout\n", pixel->x, pixel->y);
+        std::fprintf(stderr, "Pixel story: %s %u,%u printed on stdout\n", which, pixel->x,
+                     pixel->y);
     } catch (const std::exception& error) { // a --shader-dir kernel that does not compile
         std::fprintf(stderr, "Pixel story: %s\n", error.what());
     }

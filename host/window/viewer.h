@@ -12,6 +12,7 @@
 #include "gpu/context.h"
 #include "render/renderer.h"
 #include "scene/camera.h"
+#include "scene/obj_scene.h"
 #include "scene/scene.h"
 #include "window/swapchain.h"
 
@@ -86,7 +87,13 @@ struct Viewer {
     bool snapshotNow = false;           // P: write what is shown, after this frame
     bool screenshotPending = false;     // Shift+P: write it once refinement is done
     bool screenshotViewChanged = false; // the camera moved since Shift+P (said once)
-    bool storyPending = false;          // I: print the pixel story under the mouse after the frame
+    // I: print the pixel story of the pixel at (storyX, storyY), window units, after the
+    // frame: under the mouse when I was pressed, or where the left button was clicked with
+    // I held (storyClicked).
+    bool storyPending = false;
+    bool storyClicked = false;
+    double storyX = 0.0, storyY = 0.0;
+    bool rigStale = false;   // the camera moved and the scene's lights are an OBJ model's rig
     bool continuous = false; // --redraw-continuously: restart the sum every frame (soak test)
 
     // --bench-window N: frames timed after the first.
@@ -118,5 +125,17 @@ inline void setCamera(Viewer& viewer, const CameraPose& camera) {
     }
     viewer.camera = camera;
     setCamera(viewer.renderer, camera);
+    // An OBJ model's rig follows the camera; the lights are rewritten once before the next
+    // trace (placeRigForCamera), not at every mouse event.
+    if (viewer.scene.lightRig) viewer.rigStale = true;
     restartRefinement(viewer);
+}
+
+// The rig placed again for the current camera, when it moved: the few lights are rewritten
+// in the scene buffer; the kernel and the rest of the scene stay.
+inline void placeRigForCamera(Viewer& viewer) {
+    if (!viewer.rigStale) return;
+    viewer.rigStale = false;
+    placeLightRig(viewer.scene, viewer.camera);
+    setLights(viewer.renderer, viewer.context, viewer.scene.lights);
 }

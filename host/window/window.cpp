@@ -124,6 +124,7 @@ void runLoop(Viewer& viewer) {
                 kWatchInterval); // minimised: draw nothing until the window changes
             continue;
         }
+        placeRigForCamera(viewer); // before the trace that sees the new camera
         if (viewer.presentNeeded || refining(viewer)) drawFrame(viewer);
         if (viewer.storyPending) printStoryUnderCursor(viewer); // the image is traced by now
         if (viewer.snapshotNow ||

@@ -6,7 +6,9 @@ missing library, degenerate faces, a z-up model, sharp edges), with and without 
 options that change it; a malformed model gets the same FILE:LINE: error as from the tool,
 with exit 3; a binary file or a PLY model is refused with a message; the model renders as
 the saved scene does; the framing fills 80% of the view; the ground shows the model's
-shadow; --crease 0 gives flat normals, 180 smooth ones.
+shadow; --crease 0 gives flat normals, 180 smooth ones; the light rig follows the camera
+(from behind, from the side, in every frame of a --turntable), while a saved scene's lights
+stay where that run's camera put them.
 
     obj_models_test.py RAYTRACER TOOL OUTPUT_DIR REFERENCE_RENDER IMAGE_DIFF
 """
@@ -82,6 +84,11 @@ VARIANTS = [
     (["--up", "-x", "--crease", "180", "--fov", "40", "--width", "300", "--height", "500"],
      ["--fit", "--ground", "--rig", "--up", "-x", "--crease", "180", "--fov", "40", "--width", "300",
       "--height", "500"]),
+    # the rig placed for a moved camera: the tool is given the same camera options
+    (["--camera-pos", "3,1,-1", "--camera-target", "0,0,-2.6"],
+     ["--fit", "--ground", "--rig", "--camera-pos", "3,1,-1", "--camera-target", "0,0,-2.6"]),
+    (["--camera-pos", "-0.5,2,-6", "--camera-up", "0.1,1,0.3", "--no-ground"],
+     ["--fit", "--rig", "--camera-pos", "-0.5,2,-6", "--camera-up", "0.1,1,0.3"]),
 ]
 
 MALFORMED = {
@@ -318,6 +325,80 @@ class WhatAModelIsGiven(unittest.TestCase):
                 positions = [c[0] for t in scene_triangles(scene) for c in t]
                 extents = [max(p[a] for p in positions) - min(p[a] for p in positions) for a in range(3)]
                 self.assertEqual(extents.index(max(extents)), tallest)
+
+
+def model_brightness(png):
+    """(mean brightness 0..255 of the pixels that are not the white background, their count)."""
+    _width, _height, rows = pixels(png)
+    model = [sum(p) / 3.0 for row in rows for p in row if p != (255, 255, 255)]
+    return sum(model) / len(model), len(model)
+
+
+# Mean model-pixel brightness from a moved camera stays within this share of the default
+# view's: the rig turns with the camera, so a cube (alike on every side) seen from behind
+# or from the side is lit as from the front; what is left is the framing (the model fills
+# the view differently from another distance and angle) and the shadowed faces seen.
+RIG_MARGIN = 0.20
+
+
+class TheRigFollowsTheCamera(unittest.TestCase):
+    SIZE = ["--width", "96", "--height", "72", "--no-ground"]
+
+    def centre(self, path):
+        scene = path + ".centre.scene"
+        self.assertEqual(run(RAYTRACER, path, "--save-scene", scene, *self.SIZE).returncode, 0)
+        positions = [c[0] for t in scene_triangles(scene) for c in t]
+        return tuple((min(p[a] for p in positions) + max(p[a] for p in positions)) / 2 for a in range(3))
+
+    def render(self, source, png, *options):
+        drawn = run(RAYTRACER, source, "-o", png, "--validate", *self.SIZE, *options)
+        self.assertEqual(drawn.returncode, 0, drawn.stderr)
+        return model_brightness(png)
+
+    def test_a_moved_camera_sees_the_model_lit_as_the_default_one(self):
+        path = write_model("rig_follows", CUBE)
+        cx, cy, cz = self.centre(path)
+        distance = -cz  # the default camera's, from the origin
+        target = "%r,%r,%r" % (cx, cy, cz)
+        front, _count = self.render(path, path + ".front.png")
+        views = {"behind": (cx, cy, cz - distance), "side": (cx + distance, cy, cz)}
+        for view, eye in views.items():
+            with self.subTest(view=view):
+                seen, count = self.render(path, path + ".%s.png" % view,
+                                          "--camera-pos", "%r,%r,%r" % eye, "--camera-target", target)
+                self.assertGreater(count, 500)
+                print("rig: %s: mean model brightness %.1f, default view %.1f (%+.1f%%)"
+                      % (view, seen, front, 100 * (seen / front - 1)))
+                self.assertLess(abs(seen / front - 1), RIG_MARGIN)
+        # The scene saved for the default camera keeps its lights in the world: seen from
+        # behind, the model faces away from its key and fill lights and is much darker,
+        # which is what the rig's following avoids.
+        saved = path + ".default.scene"
+        self.assertEqual(run(RAYTRACER, path, "--save-scene", saved, *self.SIZE).returncode, 0)
+        fixed, _count = self.render(saved, path + ".fixed_behind.png", "--camera-pos",
+                                    "%r,%r,%r" % views["behind"], "--camera-target", target)
+        print("rig: behind, lights fixed in the world: %.1f (%+.1f%%)" % (fixed, 100 * (fixed / front - 1)))
+        self.assertLess(fixed / front - 1, -RIG_MARGIN)
+
+    def test_the_rig_follows_each_frame_of_a_turntable(self):
+        path = write_model("rig_turntable", CUBE)
+        folder = os.path.join(OUTPUT, "rig_turntable", "frames")
+        shutil.rmtree(folder, ignore_errors=True)
+        os.makedirs(folder)
+        drawn = run(RAYTRACER, path, "--turntable", "4", "-o", os.path.join(folder, "{frame}.png"), "--validate",
+                    *self.SIZE)
+        self.assertEqual(drawn.returncode, 0, drawn.stderr)
+        first, _count = model_brightness(os.path.join(folder, "0.png"))
+        for frame in (1, 2, 3):
+            with self.subTest(frame=frame):
+                seen, _count = model_brightness(os.path.join(folder, "%d.png" % frame))
+                print("rig: turntable frame %d of 4: %.1f, frame 0 %.1f (%+.1f%%)"
+                      % (frame, seen, first, 100 * (seen / first - 1)))
+                self.assertLess(abs(seen / first - 1), RIG_MARGIN)
+        # Frame 0 is the plain render: the batch places the rig as the single image does.
+        single = path + ".single.png"
+        self.render(path, single)
+        self.assertEqual(read(single), read(os.path.join(folder, "0.png")))
 
 
 if __name__ == "__main__":

@@ -63,7 +63,10 @@ std::set<std::string> glfwNamesInTable() {
                 names.insert("GLFW_MOUSE_BUTTON_LEFT");
             else if (key == "right drag")
                 names.insert("GLFW_MOUSE_BUTTON_RIGHT");
-            else if (key == "wheel")
+            else if (key.ends_with(" + left click")) { // a key held while clicking
+                names.insert("GLFW_MOUSE_BUTTON_LEFT");
+                names.insert("GLFW_KEY_" + key.substr(0, key.size() - 13));
+            } else if (key == "wheel")
                 names.insert("glfwSetScrollCallback");
             else if (key == "Esc")
                 names.insert("GLFW_KEY_ESCAPE");

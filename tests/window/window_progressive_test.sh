@@ -5,9 +5,11 @@
 # prints the camera as options; mid-refinement (a second window), P writes what is shown
 # with its sample count K in its name, equal to headless --spp K, Shift+P waits, says when a
 # camera move retargets it and that it was dropped when the window closes first;
-# I prints the story of the pixel under the mouse, the JSON of headless --pixel;
+# I prints the story of the pixel under the mouse, the JSON of headless --pixel, and so does a
+# left click with I held for the clicked pixel, without orbiting;
 # V recreates the swapchain; a mouse drag moves the camera and C and Home reset it to the
-# default camera; Q quits with status 0 and the validation layer stays silent.
+# default camera; Q quits with status 0 and the validation layer stays silent; an OBJ model's
+# light rig follows an orbit (the window equals the headless render of that camera).
 #
 # usage: window_progressive_test.sh RAYTRACER SCENE OUTPUT_DIR IMAGE_DIFF
 set -euo pipefail
@@ -107,6 +109,30 @@ run_inside_xvfb() {
         fail "I printed no story of pixel 50,40 (log $log)"
     fi
 
+    # A left click with I held prints the story of the clicked pixel, not the one under the
+    # mouse when I went down, and starts no orbit (the view stays the headless image).
+    env -u DISPLAY timeout 120 "$raytracer" "$scene" --pixel 120,90 --width $WIDTH --height $HEIGHT --spp $SPP \
+        "${CAMERA[@]}" > story-click-headless.json 2> story-click-headless.log || fail "headless --pixel 120,90 (log story-click-headless.log)"
+    timeout 10 xdotool keydown --window "$id" i sleep 0.3 mousemove --window "$id" 120 90 sleep 0.3 click 1 \
+        sleep 0.3 keyup --window "$id" i || true
+    if wait_for_log "$pid" "$log" "Pixel story: clicked pixel 120,90 printed on stdout" 1 30; then
+        # The last story in the log is the click's.
+        awk '/^\{"renderer": "gpu"/ { story = ""; inside = 1 } inside { story = story $0 "\n" }
+             /"pixel_8bit"/ { if (inside) last = story; inside = 0 } END { printf "%s", last }' "$log" > story-click-window.json
+        if [[ -s story-click-headless.json ]] && cmp -s story-click-headless.json story-click-window.json; then
+            pass "I held + left click printed the story of pixel 120,90, identical to headless --pixel 120,90"
+        else
+            fail "I + click: the window's story (story-click-window.json) differs from headless --pixel (story-click-headless.json)"
+        fi
+    else
+        fail "I + click printed no story of the clicked pixel 120,90 (log $log)"
+    fi
+    if window_matches "$id" moved.png click-window; then
+        pass "I + click started no orbit: the view is unchanged"
+    else
+        fail "I + click moved the camera (see click-window.png)"
+    fi
+
     press_key "$id" v
     if wait_for_log "$pid" "$log" "Vsync off" 1 20 && window_matches "$id" moved.png vsync-window; then
         pass "V: swapchain recreated without vsync, the image is still exact"
@@ -162,6 +188,7 @@ run_inside_xvfb() {
 
     expect_clean_quit "$pid" "$id" q "$log"
     mid_refinement
+    model_rig
     echo "window progressive test: $passed passed, $failed failed (files in $output_dir)"
     ((failed == 0))
 }
@@ -211,6 +238,55 @@ mid_refinement() {
     else
         fail "no 'Screenshot: dropped' line on closing (log $log)"
     fi
+}
+
+# An OBJ model's light rig follows the window's camera: after an orbit the window equals the
+# headless render of the camera that O prints (tolerance 0), whose rig is placed for it.
+model_rig() {
+    local log=window-model.log id model=rig_cube.obj
+    printf 'v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n%s\n' \
+        'f 1 4 3 2
+f 1 2 6 5
+f 2 3 7 6
+f 3 4 8 7
+f 4 1 5 8
+f 5 6 7 8' > "$model"
+    timeout 150 "$raytracer" "$model" --validate --width $WIDTH --height $HEIGHT --spp $SPP > "$log" 2>&1 &
+    local pid=$!
+    id=$(wait_for_window "$pid" "$model" 90) || { fail "no model window (log $log)"; cat "$log"; return; }
+    wait_for_log "$pid" "$log" "Refined: $SPP samples" 1 60 || fail "the model window never refined (log $log)"
+    local x=$((WIDTH / 2)) y=$((HEIGHT / 2)) refined
+    refined=$(grep -cF "Refined: $SPP samples" "$log")
+    timeout 10 xdotool mousemove --window "$id" $x $y mousedown 1 mousemove --window "$id" $((x + 80)) $((y + 10)) \
+        sleep 0.2 mousemove --window "$id" $((x + 160)) $((y + 20)) sleep 0.2 mouseup 1 || true
+    wait_for_log "$pid" "$log" "Refined: $SPP samples" $((refined + 1)) 60 || fail "no refinement after the orbit (log $log)"
+    sleep 1
+    press_key "$id" o
+    if ! wait_for_log "$pid" "$log" "Camera: --camera-pos" 1 20; then
+        fail "O printed no camera for the model (log $log)"
+        expect_clean_quit "$pid" "$id" q "$log"
+        return
+    fi
+    local -a camera
+    read -r -a camera <<< "$(grep -F "Camera: --camera-pos" "$log" | tail -n 1 | sed -E 's/^Camera: //')"
+    local scene=$model # headless renders $scene
+    headless orbited-model.png "${camera[@]}"
+    if window_matches "$id" orbited-model.png orbited-model-window; then
+        pass "model rig: after an orbit the window equals the headless render of that camera (${camera[*]})"
+    else
+        fail "model rig: the orbited window differs from headless ${camera[*]} (see orbited-model-window.png)"
+    fi
+    # Lights fixed in the world (the default camera's scene, saved) light that view otherwise:
+    # the match above is the rig following, not a rig that never moved.
+    env -u DISPLAY timeout 60 "$raytracer" "$model" --save-scene rig_cube.scene > rig-save.log 2>&1 ||
+        fail "--save-scene of the model (log rig-save.log)"
+    scene=rig_cube.scene headless fixed-lights-model.png "${camera[@]}"
+    if ! "$image_diff" orbited-model.png fixed-lights-model.png --tolerance 0 --min-match 100 > fixed-diff.txt 2>&1; then
+        pass "model rig: the default camera's lights, fixed in the world, would light that view otherwise"
+    else
+        fail "model rig: the fixed lights give the same image, so the test shows nothing"
+    fi
+    expect_clean_quit "$pid" "$id" q "$log"
 }
 
 if [[ $# == 5 && $1 == --inside-xvfb ]]; then

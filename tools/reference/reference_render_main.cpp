@@ -149,6 +149,7 @@ int main(int argc, char** argv) {
         ObjSceneSetup modelSetup;
         modelSetup.fovDegrees = settings.fovDegrees;
         modelSetup.aspect = double(settings.width) / double(settings.height);
+        modelSetup.camera = {settings.cameraPosition, settings.cameraTarget, settings.cameraUp};
         const Scene scene = loadScene(scenePath, modelSetup);
         for (const std::string& warning : scene.warnings)
             std::fprintf(stderr, "%s\n", warning.c_str());
