@@ -5,6 +5,7 @@
 #include "window/overlay.h"
 
 #include "base/scope_guard.h"
+#include "gpu/resources.h"
 #include "gpu/vk_check.h"
 #include "window/input.h"
 #include "window/reload.h"
@@ -102,24 +103,8 @@ void createFramebuffers(Overlay& overlay, VkDevice device, const Swapchain& swap
 
 // The font atlas goes to the device once, in a command buffer of its own.
 void uploadFonts(const Context& context) {
-    VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    allocateInfo.commandPool = context.commandPool;
-    allocateInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    allocateInfo.commandBufferCount = 1;
-    VkCommandBuffer commands = VK_NULL_HANDLE;
-    VK_CHECK(vkAllocateCommandBuffers(context.device, &allocateInfo, &commands));
-    ScopeExit release(
-        [&] { vkFreeCommandBuffers(context.device, context.commandPool, 1, &commands); });
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    VK_CHECK(vkBeginCommandBuffer(commands, &begin));
-    ImGui_ImplVulkan_CreateFontsTexture(commands);
-    VK_CHECK(vkEndCommandBuffer(commands));
-    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &commands;
-    VK_CHECK(vkQueueSubmit(context.queue, 1, &submit, VK_NULL_HANDLE));
-    VK_CHECK(vkQueueWaitIdle(context.queue));
+    runOneTimeCommands(
+        context, [](VkCommandBuffer commands) { ImGui_ImplVulkan_CreateFontsTexture(commands); });
     ImGui_ImplVulkan_DestroyFontUploadObjects();
 }
 
