@@ -18,7 +18,7 @@ namespace {
 // window adds samples 0..s-1 in the order a headless render does).
 std::string headlessTwin(const Viewer& viewer, std::uint32_t width, std::uint32_t height,
                          std::uint32_t samples) {
-    const Options& options = *viewer.options;
+    const Options& options = viewer.options;
     if (samples != viewer.sampleTarget && options.kernel.sampler != Sampler::R2)
         return "; the " + choiceName(samplerNames(), options.kernel.sampler) +
                " sampler places its samples by their count, so only the finished image (" +
@@ -33,7 +33,7 @@ void writeScreenshot(Viewer& viewer) {
     viewer.snapshotNow = false;
     viewer.screenshotPending = false;
     viewer.screenshotViewChanged = false;
-    const Options& options = *viewer.options;
+    const Options& options = viewer.options;
     const std::uint32_t samples = viewer.samplesDone;
     const std::filesystem::path path = nextScreenshotPath(
         std::filesystem::current_path(), options.scenePath.stem().string(), samples);

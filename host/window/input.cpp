@@ -158,7 +158,7 @@ void onRefresh(GLFWwindow* window) {
 std::string cameraOptions(const Viewer& viewer) {
     const CameraPose& camera = viewer.camera;
     return "--camera-pos " + triple(camera.position) + " --camera-target " + triple(camera.target) +
-           " --camera-up " + triple(camera.up) + " --fov " + shortest(viewer.options->fovDegrees);
+           " --camera-up " + triple(camera.up) + " --fov " + shortest(viewer.options.fovDegrees);
 }
 
 void installInputCallbacks(Viewer& viewer) {

@@ -149,7 +149,7 @@ template <typename T> bool choiceButtons(const char* label, const ChoiceNames<T>
 
 // The switches: each edits a copy of the window's options, applied when one changed.
 void buildSwitches(Viewer& viewer) {
-    Options options = *viewer.options;
+    Options options = viewer.options;
     bool changed = false;
     changed |= choiceButtons("sampler", samplerNames(), options.kernel.sampler);
     changed |= choiceButtons("accel", accelerationNames(), options.acceleration);
@@ -174,7 +174,7 @@ void buildSwitches(Viewer& viewer) {
         options.samplesGiven = true;
         changed = true;
     }
-    if (changed && !(options == *viewer.options)) applyOptions(viewer, options);
+    if (changed && !(options == viewer.options)) applyOptions(viewer, options);
 }
 
 void buildCamera(const Viewer& viewer) {

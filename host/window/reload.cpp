@@ -35,8 +35,8 @@ bool rebuildRenderer(Viewer& viewer, const Scene& scene, const RenderSettings& s
 void reloadShaders(Viewer& viewer) {
     if (rebuildRenderer(viewer, viewer.scene, viewer.renderer.settings))
         std::fprintf(stderr, "Reloaded the shaders%s%s\n",
-                     viewer.options->shaderDirectory.empty() ? "" : " from ",
-                     viewer.options->shaderDirectory.string().c_str());
+                     viewer.options.shaderDirectory.empty() ? "" : " from ",
+                     viewer.options.shaderDirectory.string().c_str());
 }
 
 } // namespace
@@ -44,7 +44,7 @@ void reloadShaders(Viewer& viewer) {
 void reloadScene(Viewer& viewer) {
     Scene scene;
     try {
-        scene = loadScene(viewer.options->scenePath, objSceneSetup(*viewer.options));
+        scene = loadScene(viewer.options.scenePath, objSceneSetup(viewer.options));
     } catch (const SceneError& error) {
         std::fprintf(stderr, "%s\nKeeping the last good scene.\n", error.what());
         return;
@@ -54,7 +54,7 @@ void reloadScene(Viewer& viewer) {
     placeLightRig(scene, viewer.camera); // a model's rig for where the window's camera is now
     if (rebuildRenderer(viewer, scene, viewer.renderer.settings)) {
         viewer.scene = std::move(scene);
-        std::fprintf(stderr, "Reloaded %s\n", viewer.options->scenePath.string().c_str());
+        std::fprintf(stderr, "Reloaded %s\n", viewer.options.scenePath.string().c_str());
     }
 }
 
@@ -81,7 +81,7 @@ bool applyOptions(Viewer& viewer, const Options& options) {
         options.samplesGiven ? options.samplesPerPixel : viewer.sampleTarget;
     settings.samplesPerPixel = target;
     if (!rebuildRenderer(viewer, viewer.scene, settings)) return false;
-    viewer.liveOptions = options;
+    viewer.options = options;
     viewer.sampleTarget = target;
     viewer.presentNeeded = true;
     return true;

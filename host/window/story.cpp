@@ -26,13 +26,9 @@ void printStoryUnderCursor(Viewer& viewer) {
         const gpu::GpuPixelStory story =
             tracePixelStory(viewer.renderer, viewer.context, pixel->x, pixel->y,
                             VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-        const StoryHeader header{viewer.options->scenePath.string(),
-                                 pixel->x,
-                                 pixel->y,
-                                 output.width,
-                                 output.height,
-                                 settings.samplesPerPixel,
-                                 settings.depth};
+        const StoryHeader header{
+            viewer.options.scenePath.string(), pixel->x,      pixel->y, output.width, output.height,
+            settings.samplesPerPixel,          settings.depth};
         std::fputs(pixelStoryJson(story, viewer.renderer.sources, header).c_str(), stdout);
         std::fflush(stdout);
         std::fprintf(stderr, "Pixel story: %s %u,%u printed on stdout\n", which, pixel->x,

@@ -48,9 +48,8 @@ struct Overlay {
 
 struct Viewer {
     // The command line's options as the window uses them now: the overlay's switches change
-    // this copy (liveOptions), so that P's headless command names what is shown.
-    Options liveOptions;
-    const Options* options = nullptr; // &liveOptions once open
+    // this copy, so that P's headless command names what is shown.
+    Options options;
     GLFWwindow* window = nullptr;
     Context context;
     VkSurfaceKHR surface = VK_NULL_HANDLE;

@@ -47,9 +47,8 @@ void onGlfwError(int code, const char* description) {
 }
 
 void open(Viewer& viewer, const Options& commandLine, const Scene& scene) {
-    viewer.liveOptions = commandLine;
-    viewer.options = &viewer.liveOptions;
-    Options& options = viewer.liveOptions;
+    viewer.options = commandLine;
+    const Options& options = viewer.options;
     viewer.scene = scene;
     viewer.bounds = sceneBounds(scene);
     viewer.camera = options.camera;
