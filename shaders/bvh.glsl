@@ -78,18 +78,17 @@ float nextRealUp(float t) {
 }
 #endif
 
-// The primitives of one leaf against the ray, from its child reference: the first primitive
-// and the leaf word (shared.h). Closest hit: equal distances go to the lower (kind, index),
-// spheres first, which is what the brute-force loops give (they take primitives in that
-// order and keep the first of equals), so both paths agree exactly. Returns true in any-hit
-// mode when something was hit. The kind test folds away for a scene of one kind
-// (specialization constants, trace.comp).
-bool intersectLeaf(Ray ray, ShearedRay sheared, uint first, uint count, bool anyHitMode,
-                   inout Hit hit) {
-    uint end = first + (count & BVH_COUNT_MASK);
+// The primitives of one leaf against the ray, from its child reference (shared.h). Closest hit:
+// equal distances go to the lower (kind, index), spheres first, which is what the brute-force loops
+// give (they take primitives in that order and keep the first of equals), so both paths agree
+// exactly. Returns true in any-hit mode when something was hit. The kind test folds away for a
+// scene of one kind (specialization constants, trace.comp).
+bool intersectLeaf(Ray ray, ShearedRay sheared, uint leaf, bool anyHitMode, inout Hit hit) {
+    uint first = leaf & BVH_FIRST_MASK;
+    uint end = first + ((leaf >> BVH_COUNT_SHIFT) & BVH_MAX_LEAF_COUNT);
     real limit = anyHitMode ? hit.t : nextRealUp(hit.t);
     real t;
-    if (sceneHasSpheres && (!sceneHasTriangles || (count & BVH_LEAF_SPHERES) != 0u)) {
+    if (sceneHasSpheres && (!sceneHasTriangles || (leaf & BVH_LEAF_SPHERES) != 0u)) {
         for (uint i = first; i < end; ++i) {
             if (!intersectSphere(ray, fetchSphere(i), limit, t)) continue;
             if (anyHitMode) return true;
@@ -113,13 +112,12 @@ bool intersectLeaf(Ray ray, ShearedRay sheared, uint first, uint count, bool any
     return false;
 }
 
-// A child reference as traversal carries it: x the node index or first primitive, y the
-// leaf word (0 for an interior node), the .w components of GpuBvhNode (shared.h).
-uvec2 leftChild(GpuBvhNode node) {
-    return floatBitsToUint(vec2(node.leftMinAndIndex.w, node.leftMaxAndCount.w));
+// A node's child references (shared.h).
+uint leftChild(GpuBvhNode node) {
+    return floatBitsToUint(node.leftMinAndRef.w);
 }
-uvec2 rightChild(GpuBvhNode node) {
-    return floatBitsToUint(vec2(node.rightMinAndIndex.w, node.rightMaxAndCount.w));
+uint rightChild(GpuBvhNode node) {
+    return floatBitsToUint(node.rightMinAndRef.w);
 }
 
 // Iterative depth-first traversal with a fixed stack (the builder keeps the depth within
@@ -146,27 +144,26 @@ uvec2 rightChild(GpuBvhNode node) {
 bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
     ShearedRay sheared = shearRay(ray);
     BoxRay slabRay = boxRay(ray);
-    // Pending children's references. Arrays of scalars: an array of uvec2 for the
-    // references cost lavapipe 4% more instructions on table.scene, one uvec3 array with
-    // the entry distance 4.3% more than three scalar arrays.
-    uint stackIndex[BVH_STACK_SIZE];
-    uint stackWord[BVH_STACK_SIZE];
+    // Pending children's references: one array of uints. Each further array costs lavapipe a
+    // per-lane access on every push and pop: the references as two arrays (node index or
+    // first primitive, leaf word) took 7% more instructions on table.scene, a uvec2 array
+    // 4% more than those two, a uvec3 array with the entry distance 4.3% more than three
+    // scalar arrays (docs/performance.md).
+    uint stack[BVH_STACK_SIZE];
     uint stackSize = 0u;
-    uvec2 child = uvec2(0u); // the root: interior node 0
+    uint child = 0u; // the root: interior node 0
     for (;;) {
         for (;;) {
-            if (child.y != 0u) break; // a leaf
-            GpuBvhNode node = fetchBvhNode(child.x);
+            if ((child & BVH_LEAF) != 0u) break;
+            GpuBvhNode node = fetchBvhNode(child);
             real leftEntry, rightEntry;
-            bool hitLeft = hitBox(slabRay, rvec3(node.leftMinAndIndex.xyz),
-                                  rvec3(node.leftMaxAndCount.xyz), hit.t, leftEntry);
-            bool hitRight = hitBox(slabRay, rvec3(node.rightMinAndIndex.xyz),
-                                   rvec3(node.rightMaxAndCount.xyz), hit.t, rightEntry);
+            bool hitLeft = hitBox(slabRay, rvec3(node.leftMinAndRef.xyz), rvec3(node.leftMax.xyz),
+                                  hit.t, leftEntry);
+            bool hitRight = hitBox(slabRay, rvec3(node.rightMinAndRef.xyz),
+                                   rvec3(node.rightMax.xyz), hit.t, rightEntry);
             if (hitLeft && hitRight) {
                 bool rightFirst = rightEntry < leftEntry;
-                uvec2 far = rightFirst ? leftChild(node) : rightChild(node);
-                stackIndex[stackSize] = far.x;
-                stackWord[stackSize] = far.y;
+                stack[stackSize] = rightFirst ? leftChild(node) : rightChild(node);
                 ++stackSize;
                 child = rightFirst ? rightChild(node) : leftChild(node);
             } else if (hitLeft || hitRight) {
@@ -174,13 +171,13 @@ bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
             } else {
                 if (stackSize == 0u) return false;
                 --stackSize;
-                child = uvec2(stackIndex[stackSize], stackWord[stackSize]);
+                child = stack[stackSize];
             }
         }
-        if (intersectLeaf(ray, sheared, child.x, child.y, anyHitMode, hit)) return true;
+        if (intersectLeaf(ray, sheared, child, anyHitMode, hit)) return true;
         if (stackSize == 0u) return false;
         --stackSize;
-        child = uvec2(stackIndex[stackSize], stackWord[stackSize]);
+        child = stack[stackSize];
     }
 }
 

@@ -106,12 +106,17 @@ using uint = std::uint32_t;
 // Traversal keeps the far child of each interior node on a fixed stack of this many
 // entries, at most one per level, so the builder keeps every leaf within this depth.
 #define BVH_STACK_SIZE 32
-// A child reference's count word (GpuBvhNode's ...MaxAndCount.w): 0 for an interior node;
-// for a leaf, BVH_LEAF, its primitive count, and BVH_LEAF_SPHERES when they are spheres
-// (every leaf holds one kind). Nonzero exactly for a leaf.
+// A child reference, one uint (GpuBvhNode's ...MinAndRef.w): an interior child's node index,
+// below BVH_LEAF; a leaf's BVH_LEAF | count << BVH_COUNT_SHIFT | first primitive, with
+// BVH_LEAF_SPHERES when they are spheres (every leaf holds one kind). One uint per
+// reference keeps the traversal stack to one array (shaders/bvh.glsl), which lavapipe keeps
+// in memory, each push and pop a per-lane access per array (docs/performance.md).
 #define BVH_LEAF 0x80000000u
 #define BVH_LEAF_SPHERES 0x40000000u
-#define BVH_COUNT_MASK 0x3fffffffu
+#define BVH_COUNT_SHIFT 26
+#define BVH_MAX_LEAF_COUNT 15u         // a leaf's count field: 4 bits
+#define BVH_FIRST_MASK 0x03ffffffu     // a leaf's first primitive: 26 bits
+#define BVH_MAX_PRIMITIVES 0x04000000u // so every slot fits the first-primitive field
 
 // A material, shared by every sphere and vertex that uses it. 32 bytes.
 struct GpuMaterial {
@@ -131,19 +136,14 @@ struct GpuLight {
 // of their own; a child's reference says where its primitives are, so they are tested
 // without a further fetch. The uints in the .w components are stored with their bit
 // patterns (std::bit_cast on the host, floatBitsToUint in GLSL).
-// Child reference, interior child: ...MinAndIndex.w is its node index, ...MaxAndCount.w 0.
-// Leaf child: ...MinAndIndex.w is the first of its primitives, which are consecutive in
-// the sphere or triangle arrays (the packer stores them in leaf order); ...MaxAndCount.w
-// is BVH_LEAF | count, with BVH_LEAF_SPHERES for spheres.
-// Nodes are depth first from the root, node 0; an interior left child is the next node.
-// A hierarchy that is a single leaf is one node: that leaf on the left and, on the right,
-// an empty leaf (count 0) whose box is a point; a ray rarely enters it, and then it costs
-// one stack entry and no primitive test.
+// Each child's reference is in ...MinAndRef.w (the uint's bits): an interior child's node
+// index, or a leaf's count and first primitive, whose primitives are consecutive in the
+// sphere or triangle arrays (the packer stores them in leaf order). ...Max.w is unused (0).
 struct GpuBvhNode {
-    vec4 leftMinAndIndex;  // left child's box min xyz; its node index or first primitive
-    vec4 leftMaxAndCount;  // left child's box max xyz; 0 (interior) or its leaf word
-    vec4 rightMinAndIndex; // the same for the right child
-    vec4 rightMaxAndCount;
+    vec4 leftMinAndRef;  // left child's box min xyz; w: its reference
+    vec4 leftMax;        // left child's box max xyz; w unused
+    vec4 rightMinAndRef; // the same for the right child
+    vec4 rightMax;
 };
 
 // Per-dispatch parameters, passed as push constants (at most 128 bytes).

@@ -283,44 +283,54 @@ class Builder {
 
 // The two sides of a node's fields (shared.h).
 struct ChildFields {
-    const glm::vec4& minAndIndex;
-    const glm::vec4& maxAndCount;
+    const glm::vec4& minAndRef;
+    const glm::vec4& max;
 };
 
 ChildFields fields(const gpu::GpuBvhNode& node, BvhSide side) {
-    if (side == BvhSide::Left) return {node.leftMinAndIndex, node.leftMaxAndCount};
-    return {node.rightMinAndIndex, node.rightMaxAndCount};
+    if (side == BvhSide::Left) return {node.leftMinAndRef, node.leftMax};
+    return {node.rightMinAndRef, node.rightMax};
 }
 
 } // namespace
 
 BvhChild bvhChild(const gpu::GpuBvhNode& node, BvhSide side) {
     const ChildFields f = fields(node, side);
-    const std::uint32_t word = std::bit_cast<std::uint32_t>(f.maxAndCount.w);
-    BvhChild child{glm::vec3(f.minAndIndex), glm::vec3(f.maxAndCount)};
-    child.index = std::bit_cast<std::uint32_t>(f.minAndIndex.w);
-    child.leaf = (word & BVH_LEAF) != 0;
-    if (child.leaf) {
-        child.count = word & BVH_COUNT_MASK;
-        child.spheres = (word & BVH_LEAF_SPHERES) != 0;
+    const std::uint32_t reference = std::bit_cast<std::uint32_t>(f.minAndRef.w);
+    BvhChild child{glm::vec3(f.minAndRef), glm::vec3(f.max)};
+    child.leaf = (reference & BVH_LEAF) != 0;
+    if (!child.leaf) {
+        child.index = reference;
+        return child;
     }
+    child.index = reference & BVH_FIRST_MASK;
+    child.count = (reference >> BVH_COUNT_SHIFT) & BVH_MAX_LEAF_COUNT;
+    child.spheres = (reference & BVH_LEAF_SPHERES) != 0;
     return child;
 }
 
 void setBvhChild(gpu::GpuBvhNode& node, BvhSide side, const BvhChild& child) {
-    if (child.leaf && child.count > BVH_COUNT_MASK)
+    if (child.leaf && child.count > BVH_MAX_LEAF_COUNT)
         throw std::invalid_argument("setBvhChild: a leaf of " + std::to_string(child.count) +
                                     " primitives does not fit its count field");
-    const std::uint32_t word =
-        child.leaf ? BVH_LEAF | child.count | (child.spheres ? BVH_LEAF_SPHERES : 0u) : 0u;
-    const glm::vec4 minAndIndex(child.lo, std::bit_cast<float>(child.index));
-    const glm::vec4 maxAndCount(child.hi, std::bit_cast<float>(word));
+    if (child.leaf && child.index > BVH_FIRST_MASK)
+        throw std::invalid_argument("setBvhChild: a leaf's first primitive " +
+                                    std::to_string(child.index) + " does not fit its reference");
+    if (!child.leaf && child.index >= BVH_LEAF)
+        throw std::invalid_argument("setBvhChild: node index " + std::to_string(child.index) +
+                                    " does not fit its reference");
+    const std::uint32_t reference = child.leaf
+                                        ? BVH_LEAF | (child.spheres ? BVH_LEAF_SPHERES : 0u) |
+                                              child.count << BVH_COUNT_SHIFT | child.index
+                                        : child.index;
+    const glm::vec4 minAndRef(child.lo, std::bit_cast<float>(reference));
+    const glm::vec4 max(child.hi, 0.0f);
     if (side == BvhSide::Left) {
-        node.leftMinAndIndex = minAndIndex;
-        node.leftMaxAndCount = maxAndCount;
+        node.leftMinAndRef = minAndRef;
+        node.leftMax = max;
     } else {
-        node.rightMinAndIndex = minAndIndex;
-        node.rightMaxAndCount = maxAndCount;
+        node.rightMinAndRef = minAndRef;
+        node.rightMax = max;
     }
 }
 
@@ -328,10 +338,11 @@ Bvh buildBvh(const PrimitiveBounds& input, const BvhSettings& settings) {
     Bvh bvh;
     const std::size_t n = input.size();
     if (n == 0) return bvh;
-    if (n > BVH_COUNT_MASK || input.sphereCount > n)
+    if (n > BVH_MAX_PRIMITIVES || input.sphereCount > n)
         throw std::invalid_argument("buildBvh: " + std::to_string(n) + " primitives are too many");
-    if (settings.maxLeafSize < 1)
-        throw std::invalid_argument("buildBvh: maxLeafSize must be at least 1");
+    if (settings.maxLeafSize < 1 || settings.maxLeafSize > BVH_MAX_LEAF_COUNT)
+        throw std::invalid_argument("buildBvh: maxLeafSize must be from 1 to " +
+                                    std::to_string(BVH_MAX_LEAF_COUNT));
 
     Builder builder(input, settings);
     Range root = builder.rangeOf(0, std::uint32_t(n));

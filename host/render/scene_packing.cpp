@@ -17,9 +17,9 @@
 static_assert(sizeof(gpu::GpuMaterial) == 32);
 static_assert(sizeof(gpu::GpuLight) == 32);
 static_assert(sizeof(gpu::GpuBvhNode) == 64, "one node per 64-byte cache line");
-static_assert(offsetof(gpu::GpuBvhNode, leftMaxAndCount) == 16);
-static_assert(offsetof(gpu::GpuBvhNode, rightMinAndIndex) == 32);
-static_assert(offsetof(gpu::GpuBvhNode, rightMaxAndCount) == 48);
+static_assert(offsetof(gpu::GpuBvhNode, leftMax) == 16);
+static_assert(offsetof(gpu::GpuBvhNode, rightMinAndRef) == 32);
+static_assert(offsetof(gpu::GpuBvhNode, rightMax) == 48);
 static_assert(sizeof(gpu::GpuFrameParams) == 128);
 static_assert(sizeof(gpu::GpuFrameParams) <= 128, "push constants are limited to 128 bytes");
 static_assert(offsetof(gpu::GpuFrameParams, image) == 80);

@@ -191,11 +191,12 @@ void expectWellFormed(const Bvh& bvh, const PrimitiveBounds& input,
 
 TEST(BvhNode, ChildReferencesRoundTripOnBothSides) {
     const BvhChild children[] = {
-        {glm::vec3(-1, -2, -3), glm::vec3(4, 5, 6), false, 7, 0, false},   // interior
-        {glm::vec3(0), glm::vec3(1), true, 123456, 8, true},               // sphere leaf
-        {glm::vec3(-0.5f), glm::vec3(0.25f), true, 0xfffffff0u, 1, false}, // triangle leaf
-        {glm::vec3(2), glm::vec3(3), true, 0, BVH_COUNT_MASK, true},       // the largest count
-        {glm::vec3(2), glm::vec3(2), true, 0, 0, false},                   // the empty leaf
+        {glm::vec3(-1, -2, -3), glm::vec3(4, 5, 6), false, 7, 0, false},      // interior
+        {glm::vec3(0), glm::vec3(1), true, 123456, 8, true},                  // sphere leaf
+        {glm::vec3(-0.5f), glm::vec3(0.25f), true, BVH_FIRST_MASK, 1, false}, // the last slot
+        {glm::vec3(2), glm::vec3(3), true, 0, BVH_MAX_LEAF_COUNT, true},      // the largest count
+        {glm::vec3(2), glm::vec3(2), true, 0, 0, false},                      // the empty leaf
+        {glm::vec3(1), glm::vec3(2), false, BVH_LEAF - 1, 0, false},          // the last node
     };
     for (const BvhChild& left : children)
         for (const BvhChild& right : children) {
@@ -207,19 +208,32 @@ TEST(BvhNode, ChildReferencesRoundTripOnBothSides) {
         }
 }
 
-TEST(BvhNode, LeafWordIsWhatTheShaderReads) {
+TEST(BvhNode, ReferenceIsWhatTheShaderReads) {
     gpu::GpuBvhNode node{};
     setBvhChild(node, BvhSide::Right, {glm::vec3(0), glm::vec3(1), true, 42, 5, true});
     setBvhChild(node, BvhSide::Left, {glm::vec3(0), glm::vec3(1), false, 3, 0, false});
-    EXPECT_EQ(std::bit_cast<std::uint32_t>(node.rightMinAndIndex.w), 42u);
-    EXPECT_EQ(std::bit_cast<std::uint32_t>(node.rightMaxAndCount.w),
-              BVH_LEAF | BVH_LEAF_SPHERES | 5u);
-    EXPECT_EQ(std::bit_cast<std::uint32_t>(node.leftMinAndIndex.w), 3u);
-    EXPECT_EQ(std::bit_cast<std::uint32_t>(node.leftMaxAndCount.w), 0u); // interior: 0
-    EXPECT_EQ(glm::vec3(node.rightMaxAndCount), glm::vec3(1));
+    EXPECT_EQ(std::bit_cast<std::uint32_t>(node.rightMinAndRef.w),
+              BVH_LEAF | BVH_LEAF_SPHERES | 5u << BVH_COUNT_SHIFT | 42u);
+    EXPECT_EQ(std::bit_cast<std::uint32_t>(node.leftMinAndRef.w), 3u); // interior: its index
+    EXPECT_EQ(node.rightMax, glm::vec4(1, 1, 1, 0));                   // w unused
+    EXPECT_EQ(node.leftMax.w, 0.0f);
     EXPECT_THROW(setBvhChild(node, BvhSide::Left,
-                             {glm::vec3(0), glm::vec3(1), true, 0, BVH_COUNT_MASK + 1, false}),
+                             {glm::vec3(0), glm::vec3(1), true, 0, BVH_MAX_LEAF_COUNT + 1, false}),
                  std::invalid_argument);
+    EXPECT_THROW(setBvhChild(node, BvhSide::Left,
+                             {glm::vec3(0), glm::vec3(1), true, BVH_FIRST_MASK + 1, 1, false}),
+                 std::invalid_argument);
+    EXPECT_THROW(
+        setBvhChild(node, BvhSide::Left, {glm::vec3(0), glm::vec3(1), false, BVH_LEAF, 0, false}),
+        std::invalid_argument);
+}
+
+TEST(BvhNode, LeavesLargerThanTheCountFieldAreRefused) {
+    PrimitiveBounds bounds;
+    bounds.boxes.assign(6 * 4, 0.0f);
+    BvhSettings settings;
+    settings.maxLeafSize = BVH_MAX_LEAF_COUNT + 1;
+    EXPECT_THROW(buildBvh(bounds, settings), std::invalid_argument);
 }
 
 TEST(Bvh, EveryPrimitiveInExactlyOneLeafAndEveryBoxBoundsItsContents) {
