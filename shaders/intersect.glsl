@@ -173,10 +173,13 @@ Hit closestHitEveryPrimitive(Ray ray) {
     }
     ShearedRay sheared = shearRay(ray);
     rvec3 barycentric;
-    for (uint i = 0u; sceneHasTriangles && i < triangleCount; ++i) {
-        if (intersectTriangle(ray, sheared, i, hit.t, t, barycentric)) {
-            hit = Hit(t, HIT_TRIANGLE, i, barycentric);
-        }
+    uint i = 0u;
+    if (sceneHasTriangles && triangleCount > 0u) { // do-while: see traverseBvh (bvh.glsl)
+        do {
+            if (intersectTriangle(ray, sheared, i, hit.t, t, barycentric)) {
+                hit = Hit(t, HIT_TRIANGLE, i, barycentric);
+            }
+        } while (++i < triangleCount);
     }
     return hit;
 }
@@ -189,8 +192,11 @@ bool anyHitEveryPrimitive(Ray ray, real tMax) {
     }
     ShearedRay sheared = shearRay(ray);
     rvec3 barycentric;
-    for (uint i = 0u; sceneHasTriangles && i < triangleCount; ++i) {
-        if (intersectTriangle(ray, sheared, i, tMax, t, barycentric)) return true;
+    uint i = 0u;
+    if (sceneHasTriangles && triangleCount > 0u) {
+        do {
+            if (intersectTriangle(ray, sheared, i, tMax, t, barycentric)) return true;
+        } while (++i < triangleCount);
     }
     return false;
 }

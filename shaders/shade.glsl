@@ -138,34 +138,37 @@ bool inShadow(SurfacePoint s, rvec3 lightPosition, rvec3 l) {
 // it would add exactly 0).
 vec3 shadePhong(SurfacePoint s, rvec3 view) {
     vec3 color = params.ambient.rgb;
-    for (uint i = 0u; i < lightCount; ++i) {
-        GpuLight light = fetchLight(i);
-        rvec3 lightPosition = light.position.xyz;
-        // A light exactly at the point has no direction: l = 0 skips it below.
-        rvec3 l = normalizeOr(lightPosition - s.position, rvec3(0.0));
-        real nDotL = dot(s.normal, l);
-        if (nDotL <= 0.0) {
-            storyLight(i, STORY_LIGHT_BEHIND, float(nDotL), vec3(0.0)); // pixel_story.glsl
-            continue;
-        }
-        if (inShadow(s, lightPosition, l)) {
-            storyLight(i, STORY_LIGHT_BLOCKED, float(nDotL), vec3(0.0));
-            continue;
-        }
-        vec3 diffuse = s.kd * float(nDotL);
-        if (!sceneHasSpecular) {
-            vec3 share = light.color.rgb * diffuse;
+    uint i = 0u;
+    if (lightCount > 0u) { // do-while: see traverseBvh (bvh.glsl)
+        do {
+            GpuLight light = fetchLight(i);
+            rvec3 lightPosition = light.position.xyz;
+            // A light exactly at the point has no direction: l = 0 skips it below.
+            rvec3 l = normalizeOr(lightPosition - s.position, rvec3(0.0));
+            real nDotL = dot(s.normal, l);
+            if (nDotL <= 0.0) {
+                storyLight(i, STORY_LIGHT_BEHIND, float(nDotL), vec3(0.0)); // pixel_story.glsl
+                continue;
+            }
+            if (inShadow(s, lightPosition, l)) {
+                storyLight(i, STORY_LIGHT_BLOCKED, float(nDotL), vec3(0.0));
+                continue;
+            }
+            vec3 diffuse = s.kd * float(nDotL);
+            if (!sceneHasSpecular) {
+                vec3 share = light.color.rgb * diffuse;
+                storyLight(i, STORY_LIGHT_LIT, float(nDotL), share);
+                color += share;
+                continue;
+            }
+            rvec3 r = 2.0 * nDotL * s.normal - l;
+            float rDotV = float(dot(r, view));
+            // pow(x, 0) is 1 for x > 0; the test keeps pow away from 0 and negative bases.
+            vec3 specular = rDotV > 0.0 ? s.ks * pow(rDotV, s.shininess) : vec3(0.0);
+            vec3 share = light.color.rgb * (diffuse + specular);
             storyLight(i, STORY_LIGHT_LIT, float(nDotL), share);
             color += share;
-            continue;
-        }
-        rvec3 r = 2.0 * nDotL * s.normal - l;
-        float rDotV = float(dot(r, view));
-        // pow(x, 0) is 1 for x > 0; the test keeps pow away from 0 and negative bases.
-        vec3 specular = rDotV > 0.0 ? s.ks * pow(rDotV, s.shininess) : vec3(0.0);
-        vec3 share = light.color.rgb * (diffuse + specular);
-        storyLight(i, STORY_LIGHT_LIT, float(nDotL), share);
-        color += share;
+        } while (++i < lightCount);
     }
     return color;
 }

@@ -118,30 +118,39 @@ layout(set = 0, binding = BINDING_PIXEL_STORY, std430) buffer PixelStoryBuffer {
 
 // Colour seen along a primary ray: the model's recursion
 //   colour = (1 - ks) local + ks colour(reflected)   (local alone when ks == 0 or at depth D)
-// unrolled into a loop that carries the product of the ks seen so far (throughput).
+// unrolled into a loop that carries the product of the ks seen so far (throughput). Each
+// pass shades a hit and traces the mirror ray; the miss test closes the loop, where
+// lavapipe leaves it (do-while: see traverseBvh in bvh.glsl): with the trace and the test
+// at the top, a vector whose rays had all missed still ran the shading once, masked.
 vec3 traceRay(Ray ray) {
     uint maxBounces = min(params.image.w, uint(MAX_DEPTH));
     vec3 color = vec3(0.0);
     vec3 throughput = vec3(1.0);
-    for (uint bounce = 0u;; ++bounce) {
-        Hit hit = closestHit(ray);
-        storyRay(bounce, ray, hit); // the story's calls record, in the --pixel kernel only
-        if (hit.kind == HIT_NONE)
-            return storyLast(STORY_NEXT_MISS, throughput, params.background.rgb,
-                             color + throughput * params.background.rgb);
-        SurfacePoint s = surfaceAt(ray, hit);
-        vec3 local = shadePhong(s, -ray.direction);
-        storySurface(s.normal, s.kd, s.ks, s.shininess, local, throughput);
-        if (!sceneHasMirrors || all(equal(s.ks, vec3(0.0))) || bounce >= maxBounces)
-            return storyLast(all(equal(s.ks, vec3(0.0))) ? STORY_NEXT_NO_MIRROR : STORY_NEXT_DEPTH,
-                             throughput, local, color + throughput * local);
-        color += throughput * (1.0 - s.ks) * local;
-        throughput *= s.ks;
-        storyReflect(color, throughput);
-        // Nothing further can contribute: same result, fewer rays.
-        if (all(equal(throughput, vec3(0.0)))) return color;
-        ray = reflectedRay(ray, s);
+    Hit hit = closestHit(ray);
+    uint bounce = 0u;
+    storyRay(bounce, ray, hit); // the story's calls record, in the --pixel kernel only
+    if (hit.kind != HIT_NONE) {
+        do {
+            SurfacePoint s = surfaceAt(ray, hit);
+            vec3 local = shadePhong(s, -ray.direction);
+            storySurface(s.normal, s.kd, s.ks, s.shininess, local, throughput);
+            if (!sceneHasMirrors || all(equal(s.ks, vec3(0.0))) || bounce >= maxBounces)
+                return storyLast(all(equal(s.ks, vec3(0.0))) ? STORY_NEXT_NO_MIRROR
+                                                             : STORY_NEXT_DEPTH,
+                                 throughput, local, color + throughput * local);
+            color += throughput * (1.0 - s.ks) * local;
+            throughput *= s.ks;
+            storyReflect(color, throughput);
+            // Nothing further can contribute: same result, fewer rays.
+            if (all(equal(throughput, vec3(0.0)))) return color;
+            ray = reflectedRay(ray, s);
+            hit = closestHit(ray);
+            ++bounce;
+            storyRay(bounce, ray, hit);
+        } while (hit.kind != HIT_NONE);
     }
+    return storyLast(STORY_NEXT_MISS, throughput, params.background.rgb,
+                     color + throughput * params.background.rgb);
 }
 
 // Which pixel of its workgroup's 8 x 8 tile an invocation traces. lavapipe runs each 8
@@ -179,10 +188,14 @@ void main() {
     uint slot = pixel.y * params.image.x + pixel.x;
     vec3 sum = vec3(0.0);
     if (progressive && first != 0u) sum = accumulation[slot].rgb;
-    for (uint s = first; s < end; ++s) {
-        storyStartSample(s, sampleOffset(pixel, s, samples));
-        sum += clamp(storySampleColor(traceRay(cameraRay(pixel, sampleOffset(pixel, s, samples)))),
-                     0.0, 1.0);
+    uint s = first;
+    if (s < end) { // do-while: see traverseBvh (bvh.glsl)
+        do {
+            storyStartSample(s, sampleOffset(pixel, s, samples));
+            sum +=
+                clamp(storySampleColor(traceRay(cameraRay(pixel, sampleOffset(pixel, s, samples)))),
+                      0.0, 1.0);
+        } while (++s < end);
     }
     if (recordPixel) { // the story, not the image
         storyPixel(sum / float(end), samples);
