@@ -3,11 +3,12 @@
 // texel buffers, views of the same ranges as the storage bindings; else through those.
 // Why: Mesa's lavapipe compiles a storage-buffer load inside control flow (every load of
 // these loops) to a loop over the 8 SIMD lanes with a branch and a bounds check each, and
-// a texel fetch to one gather, whatever the control flow. On a GPU both are one memory
-// instruction per lane; texel buffers are the classic layout for hierarchies there too.
-// In fp64 the spheres and triangle corners are doubles and stay on the storage path; the
-// other arrays are floats and uints in both precisions.
-// Needs: the scene's storage bindings and texelReads (trace.comp).
+// a texel fetch to branch-free loads whatever the control flow: one vpgatherdd for R32, a
+// 128-bit load per lane and a transpose for RGBA32 (docs/performance.md). On a GPU both are one
+// memory instruction per lane; texel buffers are the classic layout for hierarchies there too. In
+// fp64 the spheres and triangle corners are doubles and stay on the storage path; the other arrays
+// are floats and uints in both precisions. Needs: the scene's storage bindings and texelReads
+// (trace.comp).
 
 layout(set = 0, binding = BINDING_SPHERE_TEXELS) uniform samplerBuffer sphereTexels;
 layout(set = 0, binding = BINDING_CORNER_TEXELS) uniform samplerBuffer cornerTexels;
