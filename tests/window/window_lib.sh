@@ -196,3 +196,26 @@ run_in_xvfb() { # SECONDS SCREEN COMMAND...
 
 # The absolute path of an existing file, for the re-run of a test inside xvfb-run.
 absolute() { echo "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; }
+
+# The entry of a window test run as SCRIPT RAYTRACER SCENE OUTPUT_DIR IMAGE_DIFF: clears
+# OUTPUT_DIR's files and runs SCRIPT again inside a new 1024x768 Xvfb for at most 280 s;
+# there (first argument --inside-xvfb) it sets raytracer, scene, output_dir and image_diff
+# and calls the script's run_inside_xvfb. Call it last, as: window_test_main "$0" "$@".
+window_test_main() { # SCRIPT ARGS...
+    local script=$1
+    shift
+    if [[ $# == 5 && $1 == --inside-xvfb ]]; then
+        raytracer=$2 scene=$3 output_dir=$4 image_diff=$5
+        run_inside_xvfb
+        exit
+    fi
+    if (($# != 4)); then
+        echo "usage: $script RAYTRACER SCENE OUTPUT_DIR IMAGE_DIFF" >&2
+        exit 2
+    fi
+    require_window_tools
+    mkdir -p "$3"
+    rm -f "$3"/*.png "$3"/*.xwd "$3"/*.log "$3"/*.txt
+    run_in_xvfb 280 1024x768x24 "$(absolute "$script")" --inside-xvfb "$(absolute "$1")" \
+        "$(absolute "$2")" "$(absolute "$3")" "$(absolute "$4")"
+}

@@ -289,16 +289,4 @@ f 5 6 7 8' > "$model"
     expect_clean_quit "$pid" "$id" q "$log"
 }
 
-if [[ $# == 5 && $1 == --inside-xvfb ]]; then
-    raytracer=$2 scene=$3 output_dir=$4 image_diff=$5
-    run_inside_xvfb
-    exit
-fi
-if (($# != 4)); then
-    echo "usage: $0 RAYTRACER SCENE OUTPUT_DIR IMAGE_DIFF" >&2
-    exit 2
-fi
-require_window_tools
-mkdir -p "$3"
-rm -f "$3"/*.png "$3"/*.xwd "$3"/*.log "$3"/*.txt
-run_in_xvfb 280 1024x768x24 "$(absolute "$0")" --inside-xvfb "$(absolute "$1")" "$(absolute "$2")" "$(absolute "$3")" "$(absolute "$4")"
+window_test_main "$0" "$@"
