@@ -158,6 +158,20 @@ x11.XCloseDisplay(display)
 PY
 }
 
+# The test's tally: pass and fail print one line each and count it.
+passed=0 failed=0
+pass() { echo "PASS: $*"; passed=$((passed + 1)); }
+fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
+
+# Renders the test's scene headless to OUT.PNG at the test's WIDTH x HEIGHT and SPP, with
+# ARGS, its output in OUT.PNG.log; a failed render ends the test.
+headless() { # OUT.PNG ARGS...
+    local out=$1
+    shift
+    env -u DISPLAY timeout 120 "$raytracer" "$scene" -o "$out" --width $WIDTH --height $HEIGHT --spp $SPP "$@" \
+        > "$out.log" 2>&1 || { echo "FAIL: headless render $out (log $out.log)"; exit 1; }
+}
+
 # Sends one key press and release to window ID.
 press_key() { # ID KEY
     timeout 10 xdotool key --window "$1" "$2" || true

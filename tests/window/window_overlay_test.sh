@@ -16,17 +16,6 @@ readonly WIDTH=320 HEIGHT=240 SPP=4
 # lines of figures and a separator, after the "sampler" label (window coordinates).
 readonly GRID_X=104 GRID_Y=100
 
-passed=0 failed=0
-pass() { echo "PASS: $*"; passed=$((passed + 1)); }
-fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
-
-headless() { # OUT.PNG ARGS...
-    local out=$1
-    shift
-    env -u DISPLAY timeout 120 "$raytracer" "$scene" -o "$out" --width $WIDTH --height $HEIGHT --spp $SPP "$@" \
-        > "$out.log" 2>&1 || { echo "FAIL: headless render $out (log $out.log)"; exit 1; }
-}
-
 # The path of the COUNTth screenshot that LOG reports.
 screenshot_path() { # LOG COUNT
     grep -F "Screenshot: wrote" "$1" | sed -n "$2p" | sed -E 's/^Screenshot: wrote (.*) \([0-9]+x.*$/\1/'

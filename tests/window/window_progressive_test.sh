@@ -18,17 +18,6 @@ source "$(dirname "${BASH_SOURCE[0]}")/window_lib.sh"
 readonly WIDTH=200 HEIGHT=150 SPP=4
 readonly CAMERA=(--camera-pos 3,4,2 --camera-target 0,0,-8 --camera-up 0,1,0.2)
 
-passed=0 failed=0
-pass() { echo "PASS: $*"; passed=$((passed + 1)); }
-fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
-
-headless() { # OUT.PNG ARGS...
-    local out=$1
-    shift
-    env -u DISPLAY timeout 120 "$raytracer" "$scene" -o "$out" --width $WIDTH --height $HEIGHT --spp $SPP "$@" \
-        > "$out.log" 2>&1 || { echo "FAIL: headless render $out (log $out.log)"; exit 1; }
-}
-
 run_inside_xvfb() {
     cd "$output_dir"
     headless moved.png "${CAMERA[@]}"

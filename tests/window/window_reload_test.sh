@@ -17,10 +17,6 @@ source "$(dirname "${BASH_SOURCE[0]}")/window_lib.sh"
 readonly WIDTH=160 HEIGHT=120 FINAL_WIDTH=180 FINAL_HEIGHT=130
 readonly RELOAD_SECONDS=20 # generous: lavapipe shares two cores with other tests
 
-passed=0 failed=0
-pass() { echo "PASS: $*"; passed=$((passed + 1)); }
-fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
-
 scene_text() { # DIFFUSE of the first sphere
     printf '3\namb: 0.1 0.1 0.1\nsphere\npos: 0 0 -4\nrad: 1\ndif: %s\nspe: 0.3 0.3 0.3\nshi: 20\n' "$1"
     printf 'sphere\npos: 1.5 0.5 -5\nrad: 0.8\ndif: 0.2 0.7 0.3\nspe: 0 0 0\nshi: 1\n'

@@ -17,10 +17,6 @@ readonly WINDOW_DEADLINE=90 # seconds for the first frame (lavapipe with validat
 # xwd_to_png and find_window come from window_lib.sh, shared with the other window tests.
 source "$(dirname "${BASH_SOURCE[0]}")/window_lib.sh"
 
-passed=0 failed=0
-pass() { echo "PASS: $*"; passed=$((passed + 1)); }
-fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
-
 # Waits for the window of NAME at WxH, then captures it until it equals EXPECTED.PNG.
 # The present may reach the X server a moment after the title changes, so a few
 # captures are allowed; a wrong pixel stays wrong in all of them.
