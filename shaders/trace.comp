@@ -165,13 +165,26 @@ uvec2 pixelInTile(uvec2 local) {
     return uvec2((local.y % 2u) * 4u + local.x % 4u, (local.y / 2u) * 2u + local.x / 4u);
 }
 
+// Which tile of the dispatch (row-major, 8 x 8 pixels) this workgroup traces: the k-th
+// workgroup takes tile (k * stride) mod count, stride coprime to count (a permutation), so
+// that each worker thread of lavapipe, which takes one contiguous share of the workgroups,
+// gets tiles from all over the image rather than one band of it
+// (host/render/workgroup_order.h).
+uvec2 tileOfWorkgroup() {
+    uint columns = gl_NumWorkGroups.x;
+    uint count = columns * gl_NumWorkGroups.y;
+    uint order = gl_WorkGroupID.y * columns + gl_WorkGroupID.x;
+    uint tile = (order * floatBitsToUint(params.camera.z)) % count;
+    return uvec2(tile % columns, tile / columns);
+}
+
 void main() {
     sphereCount = bakedSpheres ? bakedSphereCount : params.counts.x;
     triangleCount = params.counts.y;
     lightCount = bakedSpheres ? bakedLightCount : params.counts.z;
     loadBakedSpheres();
     uvec2 pixel = params.dispatch.xy +
-                  gl_WorkGroupID.xy * uvec2(WORKGROUP_SIZE_X, WORKGROUP_SIZE_Y) +
+                  tileOfWorkgroup() * uvec2(WORKGROUP_SIZE_X, WORKGROUP_SIZE_Y) +
                   pixelInTile(gl_LocalInvocationID.xy);
     if (any(greaterThanEqual(pixel, params.image.xy))) return;
     // The --pixel kernel is dispatched with its pixel first: only that invocation records.

@@ -3,9 +3,11 @@
 #include "base/notes.h"
 #include "base/scope_guard.h"
 #include "gpu/vk_check.h"
+#include "render/workgroup_order.h"
 #include "shared.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -87,15 +89,18 @@ SlotSources slotSources(const Scene& scene, const PackedScene& packed) {
     return sources;
 }
 
+// For a dispatch of workgroupCount workgroups whose first pixel is (dispatchX, dispatchY).
 gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t dispatchX,
-                                std::uint32_t dispatchY, SampleRange samples) {
+                                std::uint32_t dispatchY, std::uint32_t workgroupCount,
+                                SampleRange samples) {
     const RenderSettings& settings = renderer.settings;
     const double tanHalfFov = std::tan(settings.fovDegrees * 0.5 * M_PI / 180.0);
     const double aspect = double(settings.width) / double(settings.height);
     gpu::GpuFrameParams params{};
     params.background = glm::vec4(settings.background, 0.0f);
     params.ambient = renderer.scene.ambient;
-    params.camera = glm::vec4(float(aspect * tanHalfFov), float(tanHalfFov), 0.0f, 0.0f);
+    params.camera = glm::vec4(float(aspect * tanHalfFov), float(tanHalfFov),
+                              std::bit_cast<float>(workgroupStride(workgroupCount)), 0.0f);
     const glm::dquat orientation = cameraOrientation(settings.camera);
     params.cameraOrigin = glm::vec4(glm::vec3(settings.camera.position), 0.0f);
     params.cameraOrientation = glm::vec4(float(orientation.x), float(orientation.y),
@@ -266,13 +271,15 @@ void recordRegion(const Renderer& renderer, VkCommandBuffer commands, const Trac
     const std::uint32_t right = region.x + region.width, bottom = region.y + region.height;
     for (std::uint32_t dispatchY = region.y; dispatchY < bottom; dispatchY += kMaxDispatchSide) {
         for (std::uint32_t dispatchX = region.x; dispatchX < right; dispatchX += kMaxDispatchSide) {
-            gpu::GpuFrameParams params = frameParams(renderer, dispatchX, dispatchY, samples);
+            const std::uint32_t dispatchWidth = std::min(kMaxDispatchSide, right - dispatchX);
+            const std::uint32_t dispatchHeight = std::min(kMaxDispatchSide, bottom - dispatchY);
+            const std::uint32_t columns = (dispatchWidth + WORKGROUP_SIZE_X - 1) / WORKGROUP_SIZE_X;
+            const std::uint32_t rows = (dispatchHeight + WORKGROUP_SIZE_Y - 1) / WORKGROUP_SIZE_Y;
+            gpu::GpuFrameParams params =
+                frameParams(renderer, dispatchX, dispatchY, columns * rows, samples);
             vkCmdPushConstants(commands, renderer.pipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0,
                                sizeof(params), &params);
-            std::uint32_t dispatchWidth = std::min(kMaxDispatchSide, right - dispatchX);
-            std::uint32_t dispatchHeight = std::min(kMaxDispatchSide, bottom - dispatchY);
-            vkCmdDispatch(commands, (dispatchWidth + WORKGROUP_SIZE_X - 1) / WORKGROUP_SIZE_X,
-                          (dispatchHeight + WORKGROUP_SIZE_Y - 1) / WORKGROUP_SIZE_Y, 1);
+            vkCmdDispatch(commands, columns, rows, 1);
         }
     }
     if (renderer.timestampPool)
@@ -320,7 +327,7 @@ void recordPixelStoryTrace(const Renderer& renderer, VkCommandBuffer commands, s
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.storyPipeline.layout,
                             0, 1, &renderer.descriptorSet, 0, nullptr);
     // The pixel first in the dispatch: the invocation (0, 0) of workgroup (0, 0) traces it.
-    const gpu::GpuFrameParams params = frameParams(renderer, x, y, {});
+    const gpu::GpuFrameParams params = frameParams(renderer, x, y, 1, {});
     vkCmdPushConstants(commands, renderer.storyPipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0,
                        sizeof(params), &params);
     vkCmdDispatch(commands, 1, 1, 1);
