@@ -4,26 +4,30 @@
 // the node buffer and the specialization constants useHierarchy, sceneHasSpheres and
 // sceneHasTriangles (trace.comp); fetchBvhNode and fetchSphere (scene_reads.glsl).
 
-// A ray prepared for the slab test: 1/d per axis (+-inf where d is +-0), and for each of
-// the box's two planes per axis the t to use when the origin lies exactly in that plane:
-// where 1/d is infinite, (plane - origin) * (1/d) would be 0 * inf = NaN, so +-FLOAT_MAX
-// stands in; elsewhere the slab distance is then exactly +-0, and 0 stands in, which
-// compares the same, so the substitution changes nothing on those axes.
+// The slab test's minimum and maximum: GLSL.std.450's NMin and NMax, which return the other
+// operand when one is NaN, on every Vulkan device (GLSL's min and max leave NaN undefined).
+// The slab test below lets the NaN of 0 * inf through to them, to be dropped.
+// (GL_EXT_spirv_intrinsics, enabled in trace.comp.)
+spirv_instruction(set = "GLSL.std.450", id = 79) float nanDroppingMin(float a, float b);
+spirv_instruction(set = "GLSL.std.450", id = 80) float nanDroppingMax(float a, float b);
+#ifdef RT_FP64
+spirv_instruction(set = "GLSL.std.450", id = 79) double nanDroppingMin(double a, double b);
+spirv_instruction(set = "GLSL.std.450", id = 80) double nanDroppingMax(double a, double b);
+#endif
+
+// A ray prepared for the slab test: 1/d per axis (+-inf where d is +-0, or so small that
+// 1/d overflows), and per axis whether the box's maximum plane is the one the ray enters
+// by (d < 0, -0 included), so that each slab's near and far planes are picked by a select
+// instead of being sorted by a min and a max.
 struct BoxRay {
     rvec3 origin;
     rvec3 invDirection;
-    rvec3 inLoPlane; // -FLOAT_MAX where the min plane is the near one, +FLOAT_MAX where far
-    rvec3 inHiPlane; // the opposite; both 0 on an axis where 1/d is finite
+    bvec3 entersAtMax;
 };
 
 BoxRay boxRay(Ray ray) {
     rvec3 inv = 1.0 / ray.direction;
-    bvec3 negative = lessThan(inv, rvec3(0.0)); // -0 gives -inf: negative too
-    bvec3 parallel = isinf(inv);                // d = +-0, or so small that 1/d overflows
-    rvec3 inLoPlane = mix(rvec3(-FLOAT_MAX), rvec3(FLOAT_MAX), negative);
-    rvec3 inHiPlane = -inLoPlane;
-    return BoxRay(ray.origin, inv, mix(rvec3(0.0), inLoPlane, parallel),
-                  mix(rvec3(0.0), inHiPlane, parallel));
+    return BoxRay(ray.origin, inv, lessThan(inv, rvec3(0.0))); // -0 gives -inf: negative
 }
 
 // 1 + 2 gamma(3), gamma(n) = n eps / (1 - n eps), eps = 2^-24: the relative error bound
@@ -38,28 +42,32 @@ const float SLAB_EXIT_SCALE = 1.0000003576;
 // Robust ray/box slab test of Ize, "Robust BVH Ray Traversal", JCGT 2(2), 2013: the entry
 // and exit distances are computed as (plane - origin) * (1/d) with correct rounding and the
 // exit distance is scaled by 1 + 2 gamma(3), so that a box the exact ray touches is never
-// missed, at its faces, edges and corners included (a closed box). A zero direction
-// component gives 1/d = +-inf, which puts the slab at -inf/+inf (origin inside) or misses
-// (origin outside); only an origin exactly in the plane would make 0 * inf = NaN, and
-// lavapipe's min/max then drop the NaN and can make the box look missed. That case is
-// taken out before min/max: the ray then runs in the face's plane, which the closed box
-// includes, so that plane limits nothing. No NaN reaches min/max. An origin in a face's
-// plane with a nonzero direction component keeps its exact distance 0 (boxRay): the slab
-// still bounds t there, so boxes the ray only touches at its origin stay culled beyond
-// it. Returns whether the box is entered at some t in [0, tLimit] (scaled alike), and the
+// missed, at its faces, edges and corners included (a closed box). Each slab's near plane
+// (where the ray enters it) and far plane are chosen by the sign of 1/d (Williams et al.,
+// "An Efficient and Robust Ray-Box Intersection Algorithm", JGT 2005): rounding is
+// monotonic, so that gives the same distances as sorting the two by a min and a max.
+// A zero direction component gives 1/d = +-inf: the slab's distances are then -inf or +inf
+// (the origin inside the slab, or outside: a miss), and where the origin lies exactly in
+// one of the slab's planes, 0 * inf = NaN. That plane limits nothing, since the ray runs in
+// it and the box is closed, and NaN is what the NaN-dropping maximum and minimum below
+// leave out: a near NaN does not raise the entry, a far NaN does not lower the exit. An
+// origin in a face's plane with a nonzero direction component keeps its exact distance 0,
+// so boxes the ray only touches at its origin stay culled beyond it.
+// Why not GLSL's min and max on a sorted pair: lavapipe compiles a min or max whose
+// operands may be NaN to three instructions (the operation, a NaN test and a select), and
+// sorting and substituting for NaN cost about twice this test's instructions
+// (docs/performance.md). A maximum against the constant 0 is one instruction; the first
+// one makes the rest known to be numbers, so they are one instruction each too.
+// Returns whether the box is entered at some t in [0, tLimit] (scaled alike), and the
 // entry t. In fp64 the float boxes (rounded outward by the host) are tested in double,
 // exactly converted.
 bool hitBox(BoxRay ray, rvec3 lo, rvec3 hi, real tLimit, out real tEntry) {
-    precise rvec3 toLo = lo - ray.origin;
-    precise rvec3 toHi = hi - ray.origin;
-    precise rvec3 tLo = toLo * ray.invDirection;
-    precise rvec3 tHi = toHi * ray.invDirection;
-    tLo = mix(tLo, ray.inLoPlane, equal(toLo, rvec3(0.0)));
-    tHi = mix(tHi, ray.inHiPlane, equal(toHi, rvec3(0.0)));
-    rvec3 tNear = min(tLo, tHi);
-    rvec3 tFar = max(tLo, tHi);
-    tEntry = max(max(tNear.x, tNear.y), max(tNear.z, 0.0));
-    real tExit = min(min(tFar.x, tFar.y), min(tFar.z, tLimit));
+    rvec3 nearPlane = mix(lo, hi, ray.entersAtMax);
+    rvec3 farPlane = mix(hi, lo, ray.entersAtMax);
+    precise rvec3 tNear = (nearPlane - ray.origin) * ray.invDirection;
+    precise rvec3 tFar = (farPlane - ray.origin) * ray.invDirection;
+    tEntry = nanDroppingMax(nanDroppingMax(nanDroppingMax(real(0.0), tNear.x), tNear.y), tNear.z);
+    real tExit = nanDroppingMin(nanDroppingMin(nanDroppingMin(tLimit, tFar.x), tFar.y), tFar.z);
     return tEntry <= tExit * SLAB_EXIT_SCALE;
 }
 

@@ -4,6 +4,7 @@
 // reflections as an iterative loop with a throughput, clamped samples averaged, written as
 // an exact 8-bit value.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_spirv_intrinsics : require // NMin and NMax (bvh.glsl)
 
 #include "shared.h"
 #include "precision.glsl"
