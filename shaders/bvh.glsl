@@ -56,8 +56,10 @@ const float SLAB_EXIT_SCALE = 1.0000003576;
 // Why not GLSL's min and max on a sorted pair: lavapipe compiles a min or max whose
 // operands may be NaN to three instructions (the operation, a NaN test and a select), and
 // sorting and substituting for NaN cost about twice this test's instructions
-// (docs/performance.md). A maximum against the constant 0 is one instruction; the first
-// one makes the rest known to be numbers, so they are one instruction each too.
+// (docs/performance.md). A maximum or minimum against a constant is one instruction, and
+// so is one against its result, which is known to be a number: hence the maximum begins
+// with 0 and the minimum with FLOAT_MAX, not with tLimit (never above FLOAT_MAX, so the
+// exit is the same).
 // Returns whether the box is entered at some t in [0, tLimit] (scaled alike), and the
 // entry t. In fp64 the float boxes (rounded outward by the host) are tested in double,
 // exactly converted.
@@ -67,7 +69,9 @@ bool hitBox(BoxRay ray, rvec3 lo, rvec3 hi, real tLimit, out real tEntry) {
     precise rvec3 tNear = (nearPlane - ray.origin) * ray.invDirection;
     precise rvec3 tFar = (farPlane - ray.origin) * ray.invDirection;
     tEntry = nanDroppingMax(nanDroppingMax(nanDroppingMax(real(0.0), tNear.x), tNear.y), tNear.z);
-    real tExit = nanDroppingMin(nanDroppingMin(nanDroppingMin(tLimit, tFar.x), tFar.y), tFar.z);
+    real tExit = nanDroppingMin(
+        nanDroppingMin(nanDroppingMin(nanDroppingMin(real(FLOAT_MAX), tFar.x), tFar.y), tFar.z),
+        tLimit);
     return tEntry <= tExit * SLAB_EXIT_SCALE;
 }
 
