@@ -151,8 +151,8 @@ struct GpuFrameParams {
     vec4 background;        // rgb colour of rays that hit nothing, w unused
     vec4 ambient;           // rgb ambient light added once per shading point, w unused
     vec4 camera;            // x: aspect * tan(fov/2), y: tan(fov/2), z: the stride of the
-                            // workgroups' order over the dispatch's tiles (the uint's bits;
-                            // host/render/workgroup_order.h), w unused
+                            // workgroup rows' order over the dispatch's rows of tiles (the
+                            // uint's bits; host/render/workgroup_order.h), w unused
     vec4 cameraOrigin;      // the eye in world space: xyz, w unused (0 for the default camera)
     vec4 cameraOrientation; // unit quaternion xyzw, camera space to world (0,0,0,1 for the default
                             // camera)

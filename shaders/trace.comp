@@ -166,17 +166,17 @@ uvec2 pixelInTile(uvec2 local) {
     return uvec2((local.y % 2u) * 4u + local.x % 4u, (local.y / 2u) * 2u + local.x / 4u);
 }
 
-// Which tile of the dispatch (row-major, 8 x 8 pixels) this workgroup traces: the k-th
-// workgroup takes tile (k * stride) mod count, stride coprime to count (a permutation), so
+// Which tile of the dispatch (8 x 8 pixels) this workgroup traces: the workgroups of row
+// k take the tiles of row (k * stride) mod rows, stride coprime to rows (a permutation), so
 // that each worker thread of lavapipe, which takes one contiguous share of the workgroups,
-// gets tiles from all over the image rather than one band of it
-// (host/render/workgroup_order.h).
+// gets rows from all over the image rather than one band of it
+// (host/render/workgroup_order.h). The remainder comes from a float division, exact for
+// these small numbers (workgroup_order.h says why): lavapipe has no vector integer division.
 uvec2 tileOfWorkgroup() {
-    uint columns = gl_NumWorkGroups.x;
-    uint count = columns * gl_NumWorkGroups.y;
-    uint order = gl_WorkGroupID.y * columns + gl_WorkGroupID.x;
-    uint tile = (order * floatBitsToUint(params.camera.z)) % count;
-    return uvec2(tile % columns, tile / columns);
+    uint rows = gl_NumWorkGroups.y;
+    uint product = gl_WorkGroupID.y * floatBitsToUint(params.camera.z);
+    uint quotient = uint((float(product) + 0.5) / float(rows));
+    return uvec2(gl_WorkGroupID.x, product - quotient * rows);
 }
 
 void main() {

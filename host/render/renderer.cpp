@@ -89,9 +89,9 @@ SlotSources slotSources(const Scene& scene, const PackedScene& packed) {
     return sources;
 }
 
-// For a dispatch of workgroupCount workgroups whose first pixel is (dispatchX, dispatchY).
+// For a dispatch of workgroupRows rows of workgroups whose first pixel is (dispatchX, dispatchY).
 gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t dispatchX,
-                                std::uint32_t dispatchY, std::uint32_t workgroupCount,
+                                std::uint32_t dispatchY, std::uint32_t workgroupRows,
                                 SampleRange samples) {
     const RenderSettings& settings = renderer.settings;
     const double tanHalfFov = std::tan(settings.fovDegrees * 0.5 * M_PI / 180.0);
@@ -100,7 +100,7 @@ gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t dispatch
     params.background = glm::vec4(settings.background, 0.0f);
     params.ambient = renderer.scene.ambient;
     params.camera = glm::vec4(float(aspect * tanHalfFov), float(tanHalfFov),
-                              std::bit_cast<float>(workgroupStride(workgroupCount)), 0.0f);
+                              std::bit_cast<float>(rowStride(workgroupRows)), 0.0f);
     const glm::dquat orientation = cameraOrientation(settings.camera);
     params.cameraOrigin = glm::vec4(glm::vec3(settings.camera.position), 0.0f);
     params.cameraOrientation = glm::vec4(float(orientation.x), float(orientation.y),
@@ -275,8 +275,7 @@ void recordRegion(const Renderer& renderer, VkCommandBuffer commands, const Trac
             const std::uint32_t dispatchHeight = std::min(kMaxDispatchSide, bottom - dispatchY);
             const std::uint32_t columns = (dispatchWidth + WORKGROUP_SIZE_X - 1) / WORKGROUP_SIZE_X;
             const std::uint32_t rows = (dispatchHeight + WORKGROUP_SIZE_Y - 1) / WORKGROUP_SIZE_Y;
-            gpu::GpuFrameParams params =
-                frameParams(renderer, dispatchX, dispatchY, columns * rows, samples);
+            gpu::GpuFrameParams params = frameParams(renderer, dispatchX, dispatchY, rows, samples);
             vkCmdPushConstants(commands, renderer.pipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0,
                                sizeof(params), &params);
             vkCmdDispatch(commands, columns, rows, 1);
