@@ -26,6 +26,10 @@ std::string hex(std::uint64_t value) {
     return text;
 }
 
+std::string spirvPrefix(SpirvStage stage) {
+    return stage == SpirvStage::Specialized ? "specialized-" : "spirv-";
+}
+
 void noteIgnored(const std::filesystem::path& file, const std::string& problem) {
     note("note: ignoring cache file %s: %s; rebuilding it\n", file.c_str(), problem.c_str());
 }
@@ -87,12 +91,12 @@ std::filesystem::path userCacheDirectory(bool enabled) {
 }
 
 std::optional<std::vector<std::uint32_t>> loadCachedSpirv(const std::filesystem::path& directory,
-                                                          std::uint64_t sourceKey) {
+                                                          std::uint64_t key, SpirvStage stage) {
     if (directory.empty()) return std::nullopt;
-    const std::filesystem::path file = directory / ("spirv-" + hex(sourceKey) + ".bin");
+    const std::filesystem::path file = directory / (spirvPrefix(stage) + hex(key) + ".bin");
     std::string problem;
     std::optional<std::vector<std::uint8_t>> bytes =
-        readCacheFile(file, CacheKind::Spirv, sourceKey, problem);
+        readCacheFile(file, CacheKind::Spirv, key, problem);
     if (bytes && (bytes->size() < 20 || bytes->size() % 4 != 0)) problem = "not SPIR-V (size)";
     std::vector<std::uint32_t> spirv;
     if (bytes && problem.empty()) {
@@ -108,10 +112,10 @@ std::optional<std::vector<std::uint32_t>> loadCachedSpirv(const std::filesystem:
     return spirv;
 }
 
-void storeCachedSpirv(const std::filesystem::path& directory, std::uint64_t sourceKey,
-                      const std::vector<std::uint32_t>& spirv) {
+void storeCachedSpirv(const std::filesystem::path& directory, std::uint64_t key,
+                      const std::vector<std::uint32_t>& spirv, SpirvStage stage) {
     if (directory.empty()) return;
-    store(directory, "spirv-", sourceKey, CacheKind::Spirv, spirv.data(),
+    store(directory, spirvPrefix(stage), key, CacheKind::Spirv, spirv.data(),
           spirv.size() * sizeof(std::uint32_t));
 }
 

@@ -17,12 +17,19 @@
 // candidate can be written; empty and silent when enabled is false (--no-cache).
 std::filesystem::path userCacheDirectory(bool enabled);
 
-// SPIR-V stored under sourceKey (a hash of everything that went into the compile),
-// or nothing when there is none or it is unusable (a note says why).
+// What a cached SPIR-V file holds: the kernel as glslang compiled it (spirv-KEY.bin), or
+// that kernel specialised for one specialization (specialized-KEY.bin,
+// host/gpu/spirv_specializer.h). Each kind keeps its own newest files.
+enum class SpirvStage { Compiled, Specialized };
+
+// SPIR-V stored under key (a hash of everything that went into it), or nothing when there
+// is none or it is unusable (a note says why).
 std::optional<std::vector<std::uint32_t>> loadCachedSpirv(const std::filesystem::path& directory,
-                                                          std::uint64_t sourceKey);
-void storeCachedSpirv(const std::filesystem::path& directory, std::uint64_t sourceKey,
-                      const std::vector<std::uint32_t>& spirv);
+                                                          std::uint64_t key,
+                                                          SpirvStage stage = SpirvStage::Compiled);
+void storeCachedSpirv(const std::filesystem::path& directory, std::uint64_t key,
+                      const std::vector<std::uint32_t>& spirv,
+                      SpirvStage stage = SpirvStage::Compiled);
 
 // A VkPipelineCache for one shader on one device, seeded from its file when the file is
 // whole and its VkPipelineCacheHeaderVersionOne names this device and driver.

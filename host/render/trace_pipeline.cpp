@@ -4,12 +4,16 @@
 #include "base/scope_guard.h"
 #include "gpu/pipeline_cache.h"
 #include "gpu/shader_compiler.h"
+#include "gpu/spirv_specializer.h"
 #include "gpu/vk_check.h"
 #include "render/kernel_sources.h"
 #include "shared.h"
 
 #include <cstddef>
+#include <cstring>
 #include <iterator>
+#include <map>
+#include <optional>
 #include <regex>
 #include <string>
 
@@ -48,6 +52,52 @@ std::uint64_t traceSourceKey(Precision precision) {
     return key;
 }
 
+namespace {
+
+// Where each specialization constant's value lies in TraceSpecialization.
+std::vector<VkSpecializationMapEntry> specializationMapEntries() {
+    using S = TraceSpecialization;
+    return {{SPEC_USE_HIERARCHY, offsetof(S, useHierarchy), sizeof(VkBool32)},
+            {SPEC_HAS_SPHERES, offsetof(S, hasSpheres), sizeof(VkBool32)},
+            {SPEC_HAS_TRIANGLES, offsetof(S, hasTriangles), sizeof(VkBool32)},
+            {SPEC_SAMPLER, offsetof(S, sampler), sizeof(std::uint32_t)},
+            {SPEC_STABLE_SPHERE_TEST, offsetof(S, stableSphereTest), sizeof(VkBool32)},
+            {SPEC_WATERTIGHT_TRIANGLES, offsetof(S, watertightTriangles), sizeof(VkBool32)},
+            {SPEC_RAY_OFFSET, offsetof(S, rayOffset), sizeof(std::uint32_t)},
+            {SPEC_HAS_MIRRORS, offsetof(S, hasMirrors), sizeof(VkBool32)},
+            {SPEC_HAS_SPECULAR, offsetof(S, hasSpecular), sizeof(VkBool32)},
+            {SPEC_TEXEL_READS, offsetof(S, texelReads), sizeof(VkBool32)},
+            {SPEC_BAKED_SPHERES, offsetof(S, bakedSpheres), sizeof(VkBool32)},
+            {SPEC_BAKED_SPHERE_COUNT, offsetof(S, bakedSphereCount), sizeof(std::uint32_t)},
+            {SPEC_BAKED_LIGHT_COUNT, offsetof(S, bakedLightCount), sizeof(std::uint32_t)},
+            {SPEC_RECORD_PIXEL, offsetof(S, recordPixel), sizeof(VkBool32)},
+            {SPEC_FLOAT_OUTPUT, offsetof(S, floatOutput), sizeof(VkBool32)}};
+}
+
+// The constants' values by id, for specializeSpirv.
+std::map<std::uint32_t, std::uint32_t> specializationValues(const TraceSpecialization& values) {
+    std::map<std::uint32_t, std::uint32_t> byId;
+    for (const VkSpecializationMapEntry& entry : specializationMapEntries()) {
+        std::uint32_t value = 0;
+        std::memcpy(&value, reinterpret_cast<const std::byte*>(&values) + entry.offset,
+                    sizeof(value));
+        byId[entry.constantID] = value;
+    }
+    return byId;
+}
+
+// The module specialised for these values (host/gpu/spirv_specializer.h), or as it is when
+// SPIRV-Tools cannot: createTracePipeline passes the values as specialization constants
+// either way, so both give the same kernel.
+std::vector<std::uint32_t> specializedSpirv(const std::vector<std::uint32_t>& spirv,
+                                            const TraceSpecialization& specialization) {
+    std::optional<std::vector<std::uint32_t>> specialized =
+        specializeSpirv(spirv, specializationValues(specialization));
+    return specialized ? std::move(*specialized) : spirv;
+}
+
+} // namespace
+
 TracePipeline createTracePipeline(const Context& context, const std::vector<std::uint32_t>& spirv,
                                   VkPipelineCache cache, TraceSpecialization specialization) {
     TracePipeline result;
@@ -84,25 +134,9 @@ TracePipeline createTracePipeline(const Context& context, const std::vector<std:
     pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     pipelineInfo.stage.module = module;
     pipelineInfo.stage.pName = "main";
-    using S = TraceSpecialization;
-    const VkSpecializationMapEntry specializationEntries[] = {
-        {SPEC_USE_HIERARCHY, offsetof(S, useHierarchy), sizeof(VkBool32)},
-        {SPEC_HAS_SPHERES, offsetof(S, hasSpheres), sizeof(VkBool32)},
-        {SPEC_HAS_TRIANGLES, offsetof(S, hasTriangles), sizeof(VkBool32)},
-        {SPEC_SAMPLER, offsetof(S, sampler), sizeof(std::uint32_t)},
-        {SPEC_STABLE_SPHERE_TEST, offsetof(S, stableSphereTest), sizeof(VkBool32)},
-        {SPEC_WATERTIGHT_TRIANGLES, offsetof(S, watertightTriangles), sizeof(VkBool32)},
-        {SPEC_RAY_OFFSET, offsetof(S, rayOffset), sizeof(std::uint32_t)},
-        {SPEC_HAS_MIRRORS, offsetof(S, hasMirrors), sizeof(VkBool32)},
-        {SPEC_HAS_SPECULAR, offsetof(S, hasSpecular), sizeof(VkBool32)},
-        {SPEC_TEXEL_READS, offsetof(S, texelReads), sizeof(VkBool32)},
-        {SPEC_BAKED_SPHERES, offsetof(S, bakedSpheres), sizeof(VkBool32)},
-        {SPEC_BAKED_SPHERE_COUNT, offsetof(S, bakedSphereCount), sizeof(std::uint32_t)},
-        {SPEC_BAKED_LIGHT_COUNT, offsetof(S, bakedLightCount), sizeof(std::uint32_t)},
-        {SPEC_RECORD_PIXEL, offsetof(S, recordPixel), sizeof(VkBool32)},
-        {SPEC_FLOAT_OUTPUT, offsetof(S, floatOutput), sizeof(VkBool32)}};
+    const std::vector<VkSpecializationMapEntry> specializationEntries = specializationMapEntries();
     const VkSpecializationInfo specializationInfo{
-        static_cast<std::uint32_t>(std::size(specializationEntries)), specializationEntries,
+        static_cast<std::uint32_t>(specializationEntries.size()), specializationEntries.data(),
         sizeof(specialization), &specialization};
     pipelineInfo.stage.pSpecializationInfo = &specializationInfo;
     pipelineInfo.layout = result.layout;
@@ -129,7 +163,8 @@ TracePipeline loadFromDirectory(const Context& context, const std::filesystem::p
         throw ShaderCompileError("the kernel in " + directory.string() +
                                  " does not compile (--shader-dir):\n" + log);
     }
-    return createTracePipeline(context, spirv, VK_NULL_HANDLE, specialization);
+    return createTracePipeline(context, specializedSpirv(spirv, specialization), VK_NULL_HANDLE,
+                               specialization);
 }
 
 TracePipeline loadEmbedded(const Context& context, const std::filesystem::path& cacheDirectory,
@@ -144,13 +179,22 @@ TracePipeline loadEmbedded(const Context& context, const std::filesystem::path& 
                                      precisionPreamble(precision));
         storeCachedSpirv(cacheDirectory, sourceKey, spirv);
     }
-    // One driver cache per specialization, as each compiles to different code (the
-    // struct has no padding: its bytes are its values).
+    // One specialised module and one driver cache per specialization, as each compiles to
+    // different code (the struct has no padding: its bytes are its values).
     const std::uint64_t spirvHash = hashBytes(spirv.data(), spirv.size() * sizeof(std::uint32_t));
-    PipelineCache cache = openPipelineCache(
-        context, cacheDirectory, hashBytes(&specialization, sizeof(specialization), spirvHash));
+    const std::uint64_t specializedKey =
+        hashBytes(&specialization, sizeof(specialization), spirvHash);
+    std::vector<std::uint32_t> specialized;
+    if (std::optional<std::vector<std::uint32_t>> cached =
+            loadCachedSpirv(cacheDirectory, specializedKey, SpirvStage::Specialized)) {
+        specialized = std::move(*cached);
+    } else {
+        specialized = specializedSpirv(spirv, specialization);
+        storeCachedSpirv(cacheDirectory, specializedKey, specialized, SpirvStage::Specialized);
+    }
+    PipelineCache cache = openPipelineCache(context, cacheDirectory, specializedKey);
     ScopeExit releaseCache([&] { destroyPipelineCache(context, cache); });
-    TracePipeline pipeline = createTracePipeline(context, spirv, cache.cache, specialization);
+    TracePipeline pipeline = createTracePipeline(context, specialized, cache.cache, specialization);
     OnFailure release([&] { destroyTracePipeline(context, pipeline); });
     savePipelineCache(context, cache);
     return pipeline;

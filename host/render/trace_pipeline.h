@@ -65,12 +65,14 @@ struct KernelSource {
     std::filesystem::path cacheDirectory;  // SPIR-V and driver cache; empty: none (--no-cache)
 };
 
-// The trace kernel, compiled and specialised. Embedded sources go through the on-disk
-// cache in cacheDirectory (host/gpu/pipeline_cache.h): glslang runs only when no SPIR-V
-// is cached for them, and the driver is offered its pipeline cache, keyed by the SPIR-V
-// and the specialization's bytes. A shader folder changes under us, so its kernel is
-// never cached, and its compile errors name each file with the folder in front.
-// Throws ShaderCompileError when the kernel does not compile.
+// The trace kernel, compiled and specialised: the SPIR-V handed to the driver has the
+// specialization's values frozen in and the code they switch off removed
+// (host/gpu/spirv_specializer.h). Embedded sources go through the on-disk cache in
+// cacheDirectory (host/gpu/pipeline_cache.h): glslang runs only when no SPIR-V is cached
+// for them, SPIRV-Tools only when no specialised SPIR-V is cached for them and the
+// specialization, and the driver is offered its pipeline cache under the same key. A shader folder
+// changes under us, so its kernel is never cached, and its compile errors name each file with the
+// folder in front. Throws ShaderCompileError when the kernel does not compile.
 TracePipeline loadTracePipeline(const Context& context, const KernelSource& source,
                                 TraceSpecialization specialization = {},
                                 Precision precision = Precision::Fp32);

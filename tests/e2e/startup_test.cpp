@@ -91,18 +91,23 @@ class StartupCache : public testing::Test {
 TEST_F(StartupCache, FirstRunFillsTheCacheAndLaterRunsUseIt) {
     fs::path cache = filledCache();
     std::vector<fs::path> files = filesIn(cache);
-    ASSERT_EQ(files.size(), 2u) << "expected the SPIR-V and the pipeline cache file";
+    ASSERT_EQ(files.size(), 3u)
+        << "expected the SPIR-V, the SPIR-V specialised for the scene and the pipeline cache file";
     EXPECT_EQ(files[0].filename().string().rfind("pipeline-", 0), 0u) << files[0];
-    EXPECT_EQ(files[1].filename().string().rfind("spirv-", 0), 0u) << files[1];
+    EXPECT_EQ(files[1].filename().string().rfind("specialized-", 0), 0u) << files[1];
+    EXPECT_EQ(files[2].filename().string().rfind("spirv-", 0), 0u) << files[2];
     EXPECT_EQ(png("first"), png("uncached"));
 
-    const auto written = fs::last_write_time(files[1]);
+    std::vector<fs::file_time_type> written;
+    for (const fs::path& file : files)
+        written.push_back(fs::last_write_time(file));
     ProcessResult second = render(dir_ / "home", "second");
     ASSERT_EQ(second.exitCode, 0) << second.err;
     EXPECT_EQ(second.err.find("note:"), std::string::npos) << second.err;
     EXPECT_EQ(png("second"), png("uncached"));
     EXPECT_EQ(filesIn(cache), files) << "a warm start adds no files";
-    EXPECT_EQ(fs::last_write_time(files[1]), written) << "a warm start rewrites nothing";
+    for (std::size_t i = 0; i < files.size(); ++i)
+        EXPECT_EQ(fs::last_write_time(files[i]), written[i]) << files[i] << " was rewritten";
 }
 
 TEST_F(StartupCache, NoCacheWritesNothing) {
@@ -202,13 +207,14 @@ TEST_F(StartupCache, PipelineCacheOfAnotherDeviceIsIgnoredWithANote) {
 }
 
 // Kernel variants never share a cache file: fp64 is compiled from the same sources with
-// another preamble, so it gets its own SPIR-V file (and pipeline file); a method switch is
-// a specialization constant of the same SPIR-V, so it gets only its own pipeline file.
+// another preamble, so it gets its own SPIR-V file (and specialised SPIR-V and pipeline
+// files); a method switch is a specialization constant of the same SPIR-V, so it gets only
+// its own specialised SPIR-V and pipeline files.
 // After all of them, each variant still starts warm (no note, nothing rewritten) and
 // draws what it drew uncached.
 TEST_F(StartupCache, PrecisionsAndSpecializationsKeepSeparateFiles) {
     fs::path cache = filledCache();
-    ASSERT_EQ(filesIn(cache).size(), 2u);
+    ASSERT_EQ(filesIn(cache).size(), 3u);
     ASSERT_EQ(render(dir_ / "unused-home", "fp64-uncached", {"--no-cache", "--precision", "fp64"})
                   .exitCode,
               0);
@@ -223,12 +229,14 @@ TEST_F(StartupCache, PrecisionsAndSpecializationsKeepSeparateFiles) {
         });
     };
     EXPECT_EQ(countPrefix("spirv-"), 2) << "fp32 and fp64 need two SPIR-V files";
+    EXPECT_EQ(countPrefix("specialized-"), 2);
     EXPECT_EQ(countPrefix("pipeline-"), 2);
 
     ProcessResult naive = render(dir_ / "home", "naive", {"--sphere-test", "naive"});
     ASSERT_EQ(naive.exitCode, 0) << naive.err;
     EXPECT_EQ(countPrefix("spirv-"), 2) << "a specialization constant needs no new SPIR-V";
-    EXPECT_EQ(countPrefix("pipeline-"), 3) << "but a pipeline file of its own";
+    EXPECT_EQ(countPrefix("specialized-"), 3) << "but a specialised SPIR-V file of its own";
+    EXPECT_EQ(countPrefix("pipeline-"), 3) << "and a pipeline file of its own";
 
     const std::vector<fs::path> files = filesIn(cache);
     std::vector<fs::file_time_type> times;
@@ -350,6 +358,15 @@ TEST(CacheFile, OldFilesArePruned) {
     EXPECT_EQ(filesIn(dir).size(), 8u);
     ASSERT_TRUE(loadCachedSpirv(dir, 12).has_value()) << "the newest file is kept";
     EXPECT_EQ(*loadCachedSpirv(dir, 12), spirv);
+    // Specialised SPIR-V is pruned among its own kind: many scenes' specialisations never
+    // push out the compiled kernel they came from.
+    for (std::uint64_t key = 101; key <= 112; ++key)
+        storeCachedSpirv(dir, key, spirv, SpirvStage::Specialized);
+    EXPECT_EQ(filesIn(dir).size(), 16u);
+    EXPECT_TRUE(loadCachedSpirv(dir, 12).has_value());
+    EXPECT_TRUE(loadCachedSpirv(dir, 112, SpirvStage::Specialized).has_value());
+    EXPECT_FALSE(loadCachedSpirv(dir, 12, SpirvStage::Specialized).has_value())
+        << "the two kinds do not share files";
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 // variants (precision, specialization) and their cache keys.
 #include "gpu/context.h"
 #include "gpu/shader_compiler.h"
+#include "gpu/spirv_specializer.h"
 #include "render/kernel_sources.h"
 #include "render/renderer.h"
 #include "render/scene_packing.h"
@@ -26,6 +27,48 @@ TEST(ShaderCompiler, EmbeddedKernelCompilesToSpirv) {
     std::vector<std::uint32_t> spirv = compileComputeShader("trace.comp", embeddedShaderLoader());
     ASSERT_GT(spirv.size(), 5u);
     EXPECT_EQ(spirv[0], 0x07230203u); // the SPIR-V magic number
+}
+
+// The kernel specialised before the driver sees it (gpu/spirv_specializer.h): the variants
+// the values switch off are gone, so the module is smaller, and it holds no specialization
+// constant any more; a module SPIRV-Tools cannot read gives nothing (the caller then keeps
+// the general module).
+TEST(SpirvSpecializer, FreezesTheConstantsAndDropsWhatTheySwitchOff) {
+    std::vector<std::uint32_t> spirv = compileComputeShader("trace.comp", embeddedShaderLoader());
+    // test2.scene's kernel: brute force, spheres baked, robust methods.
+    const std::map<std::uint32_t, std::uint32_t> values = {
+        {SPEC_USE_HIERARCHY, 0},
+        {SPEC_HAS_SPHERES, 1},
+        {SPEC_HAS_TRIANGLES, 1},
+        {SPEC_SAMPLER, SAMPLER_R2},
+        {SPEC_STABLE_SPHERE_TEST, 1},
+        {SPEC_WATERTIGHT_TRIANGLES, 1},
+        {SPEC_RAY_OFFSET, RAY_OFFSET_ERROR_BOUND},
+        {SPEC_HAS_MIRRORS, 1},
+        {SPEC_HAS_SPECULAR, 1},
+        {SPEC_TEXEL_READS, 1},
+        {SPEC_BAKED_SPHERES, 1},
+        {SPEC_BAKED_SPHERE_COUNT, 3},
+        {SPEC_BAKED_LIGHT_COUNT, 1},
+        {SPEC_RECORD_PIXEL, 0},
+        {SPEC_FLOAT_OUTPUT, 0}};
+    std::optional<std::vector<std::uint32_t>> specialized = specializeSpirv(spirv, values);
+    ASSERT_TRUE(specialized.has_value());
+    EXPECT_EQ((*specialized)[0], 0x07230203u);
+    EXPECT_LT(specialized->size(), spirv.size() * 4 / 5) << "expected a fifth or more removed";
+    // No OpDecorate ... SpecId (decoration 1) left: word 0 is (4 << 16) | OpDecorate (71).
+    auto countSpecIds = [](const std::vector<std::uint32_t>& module) {
+        int count = 0;
+        for (std::size_t i = 5; i + 2 < module.size(); i += module[i] >> 16 ? module[i] >> 16 : 1)
+            count += module[i] == ((4u << 16) | 71u) && module[i + 2] == 1u;
+        return count;
+    };
+    EXPECT_GT(countSpecIds(spirv), 10);
+    EXPECT_EQ(countSpecIds(*specialized), 0);
+
+    std::vector<std::uint32_t> broken = spirv;
+    broken.resize(broken.size() / 2);
+    EXPECT_FALSE(specializeSpirv(broken, values).has_value());
 }
 
 TEST(ShaderCompiler, ErrorsCarryGlslangLogWithFileAndLine) {
