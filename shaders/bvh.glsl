@@ -138,18 +138,17 @@ uint rightChild(GpuBvhNode node) {
     return floatBitsToUint(node.rightMinAndRef.w);
 }
 
-// Iterative depth-first traversal with a fixed stack (the builder keeps the depth within
-// BVH_STACK_SIZE). A step fetches one node, which holds both children's boxes (Aila &
-// Laine's layout, shared.h), and tests both; the nearer hit child is visited next and the
-// other's reference pushed. A popped child is visited whatever the closest hit so far: its
-// own boxes and primitives are tested against that hit, so nothing beyond it is taken.
+// Iterative depth-first traversal with a stack of stackDepth entries, the scene's tree depth
+// (trace.comp; the builder keeps it within BVH_STACK_SIZE). A step fetches one node, which
+// holds both children's boxes (Aila & Laine's layout, shared.h), and tests both; the nearer
+// hit child is visited next and the other's reference pushed. A popped child is visited
+// whatever the closest hit so far: its own boxes and primitives are tested against that
+// hit, so nothing beyond it is taken.
 // Keeping each entry distance to skip such a child on the pop cost lavapipe more than the
-// visits it saved: it is a third stack array, and a private array indexed at run time
-// lives in memory, where each push is a per-lane load, select and store (measured in
-// docs/performance.md). A leaf is known from its reference, so its primitives are tested
-// without fetching anything but them. Any-hit mode (shadow rays) returns at the first hit
-// found. hit.t is the limit on entry (the light's distance for shadow rays, FLOAT_MAX for
-// closest hit); returns whether any-hit mode found something.
+// visits it saved: it was a third stack array (measured in docs/performance.md). A leaf is known
+// from its reference, so its primitives are tested without fetching anything but them. Any-hit mode
+// (shadow rays) returns at the first hit found. hit.t is the limit on entry (the light's distance
+// for shadow rays, FLOAT_MAX for closest hit); returns whether any-hit mode found something.
 //
 // Loop shape "while-while" (Aila & Laine, HPG 2009): an inner loop walks interior nodes
 // until the ray stands at a leaf, then the leaf is tested. lavapipe runs 8 rays as one
@@ -168,12 +167,18 @@ uint rightChild(GpuBvhNode node) {
 bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
     ShearedRay sheared = shearRay(ray);
     BoxRay slabRay = boxRay(ray);
-    // Pending children's references: one array of uints. Each further array costs lavapipe a
-    // per-lane access on every push and pop: the references as two arrays (node index or
-    // first primitive, leaf word) took 7% more instructions on table.scene, a uvec2 array
-    // 4% more than those two, a uvec3 array with the entry distance 4.3% more than three
-    // scalar arrays (docs/performance.md).
-    uint stack[BVH_STACK_SIZE];
+    // Pending children's references, the top in stack[0]: a push moves every entry down one
+    // place and a pop up one, with constant indices only, so the array lives in registers
+    // (Mesa unrolls the loops over its constant length). Why not an array indexed by the
+    // stack's size: lavapipe keeps such an array in memory and stores into it lane by lane,
+    // each behind a branch on whether that lane is active, which mispredicted as rays
+    // diverged; a fifth of the 100k knot's kernel time, where the shifts cost a select per
+    // entry (docs/performance.md). One entry per level of the tree is enough: the stack
+    // holds at most one entry per level above the current node.
+    uint stack[stackDepth];
+    // Loops of this exact shape (an int counter against a constant) are the ones Mesa counts
+    // and unrolls; a uint one tested as i + 1u < stackDepth was not, and ran 2-3x slower.
+#define STACK_LAST (int(stackDepth) - 1)
     uint stackSize = 0u;
     uint child = 0u; // the root: interior node 0
     for (;;) {
@@ -187,29 +192,29 @@ bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
                                        rvec3(node.rightMax.xyz), hit.t, rightEntry);
                 // The child to visit next: the nearer of two hit, else the one hit.
                 bool rightNext = hitRight && (!hitLeft || rightEntry < leftEntry);
-                // The other one goes just above the top of the stack on every step, and is
-                // kept there (pushed) only when both were hit. Why not store it in the
-                // branch where both were hit: lavapipe stores into a private array lane by
-                // lane, each behind a branch on whether that lane is active; in the branch,
-                // those followed which rays had hit both boxes, and mispredicted (a
-                // quarter of toy.scene's kernel time went to those two stores); here they
-                // follow the loop's lanes, which change only as rays finish. The slot is
-                // free: the stack holds at most one entry per level above this node.
-                stack[stackSize] = rightNext ? leftChild(node) : rightChild(node);
+                if (hitLeft && hitRight) {
+                    for (int i = STACK_LAST; i > 0; --i)
+                        stack[i] = stack[i - 1];
+                    stack[0] = rightNext ? leftChild(node) : rightChild(node);
+                    ++stackSize;
+                }
                 if (hitLeft || hitRight) {
-                    if (hitLeft && hitRight) ++stackSize;
                     child = rightNext ? rightChild(node) : leftChild(node);
                 } else {
                     if (stackSize == 0u) return false;
                     --stackSize;
-                    child = stack[stackSize];
+                    child = stack[0];
+                    for (int i = 0; i < STACK_LAST; ++i)
+                        stack[i] = stack[i + 1];
                 }
             } while ((child & BVH_LEAF) == 0u);
         }
         if (intersectLeaf(ray, sheared, child, anyHitMode, hit)) return true;
         if (stackSize == 0u) return false;
         --stackSize;
-        child = stack[stackSize];
+        child = stack[0];
+        for (int i = 0; i < STACK_LAST; ++i)
+            stack[i] = stack[i + 1];
     }
 }
 

@@ -93,6 +93,8 @@ using uint = std::uint32_t;
 // bool: also write each pixel's average before the 8-bit rounding to BINDING_ACCUMULATION
 // (headless, one pass: -o out.pfm|out.exr).
 #define SPEC_FLOAT_OUTPUT 14
+// uint: the entries of the traversal stack, the hierarchy's depth (1 to BVH_STACK_SIZE).
+#define SPEC_STACK_DEPTH 15
 // The most spheres baked in: the closest-hit loop over them is unrolled, one test each.
 #define MAX_BAKED_SPHERES 15u
 #define RAY_OFFSET_FIXED 0u       // 1e-4 along the normal

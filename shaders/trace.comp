@@ -40,6 +40,9 @@ layout(constant_id = SPEC_TEXEL_READS) const bool texelReads = true;
 layout(constant_id = SPEC_BAKED_SPHERES) const bool bakedSpheres = false;
 layout(constant_id = SPEC_BAKED_SPHERE_COUNT) const uint bakedSphereCount = 0u;
 layout(constant_id = SPEC_BAKED_LIGHT_COUNT) const uint bakedLightCount = 0u;
+// The hierarchy's depth (its deepest leaf, at least 1): the entries of the traversal stack
+// (bvh.glsl), which costs a select per entry on every push and pop on lavapipe.
+layout(constant_id = SPEC_STACK_DEPTH) const uint stackDepth = BVH_STACK_SIZE;
 // The recording kernel of --pixel (pixel_story.glsl): one pixel, into `story`, not the image.
 layout(constant_id = SPEC_RECORD_PIXEL) const bool recordPixel = false;
 // -o out.pfm|out.exr: each pixel's average also goes to accumulation[] as floats.

@@ -143,6 +143,11 @@ TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderS
         specialization.bakedSphereCount = static_cast<std::uint32_t>(packed.spheres.size());
         specialization.bakedLightCount = static_cast<std::uint32_t>(packed.lights.size());
     }
+    // The traversal stack holds one entry per level of the tree at most; a tree built by
+    // packScene reports its depth (a lone leaf under the root needs one entry).
+    if (specialization.useHierarchy && packed.hierarchy.used && !settings.generalKernel)
+        specialization.stackDepth =
+            std::clamp<std::uint32_t>(packed.hierarchy.depth, 1, BVH_STACK_SIZE);
     specialization.texelReads = !settings.storageReads;
     specialization.floatOutput = settings.floatOutput;
     applyKernelChoices(specialization, settings.kernel);

@@ -32,6 +32,8 @@ struct TraceSpecialization {
     // The recording kernel of --pixel (host/render/pixel_story.h): one pixel, into the story.
     VkBool32 recordPixel = VK_FALSE;
     VkBool32 floatOutput = VK_FALSE; // averages also to BINDING_ACCUMULATION (-o .pfm/.exr)
+    // The traversal stack's entries: the hierarchy's depth (shaders/bvh.glsl, traverseBvh).
+    std::uint32_t stackDepth = BVH_STACK_SIZE;
 };
 
 // What each binding of shaders/shared.h is: the output image, a storage buffer, or one of

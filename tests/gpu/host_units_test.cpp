@@ -327,6 +327,25 @@ TEST(KernelVariants, SmallScenesSpheresAreBakedInUpToTheLimit) {
         traceSpecialization(packSceneInFileOrder(sceneWith({matte}, 1)), settings).bakedSpheres);
 }
 
+// The traversal stack gets one entry per level of the scene's tree (shaders/bvh.glsl): the
+// depth packScene reports, at least 1; the largest for the general kernel, which runs any
+// scene.
+TEST(KernelVariants, TheStackIsAsDeepAsTheTree) {
+    Material matte{glm::dvec3(0.5), glm::dvec3(0.0), 10};
+    RenderSettings settings;
+    const PackedScene many = packScene(sceneWith(std::vector<Material>(40, matte), 1),
+                                       Acceleration::Bvh, Precision::Fp32);
+    ASSERT_TRUE(many.hierarchy.used);
+    ASSERT_GT(many.hierarchy.depth, 1u);
+    EXPECT_EQ(traceSpecialization(many, settings).stackDepth, many.hierarchy.depth);
+    const PackedScene one = packScene(sceneWith({matte}, 1), Acceleration::Bvh, Precision::Fp32);
+    ASSERT_TRUE(one.hierarchy.used);
+    EXPECT_EQ(one.hierarchy.depth, 0u) << "a lone leaf under the root";
+    EXPECT_EQ(traceSpecialization(one, settings).stackDepth, 1u);
+    settings.generalKernel = true;
+    EXPECT_EQ(traceSpecialization(many, settings).stackDepth, BVH_STACK_SIZE);
+}
+
 TEST(KernelVariants, MethodChoicesBecomeSpecializationConstants) {
     RenderSettings settings;
     TraceSpecialization robust =
