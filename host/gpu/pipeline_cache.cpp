@@ -140,14 +140,14 @@ std::string pipelineCacheMismatch(const std::vector<std::uint8_t>& data,
 }
 
 PipelineCache openPipelineCache(const Context& context, const std::filesystem::path& directory,
-                                std::uint64_t spirvHash) {
+                                std::uint64_t shaderKey) {
     PipelineCache result;
     if (directory.empty()) return result;
     // The file name covers the shader and the exact device and driver, so two GPUs or two
     // builds never take turns overwriting one file; the header check below still guards
     // against a file copied or damaged into place.
     const VkPhysicalDeviceProperties& device = context.properties;
-    std::uint64_t key = hashBytes(&spirvHash, sizeof spirvHash);
+    std::uint64_t key = hashBytes(&shaderKey, sizeof shaderKey);
     key = hashBytes(&device.vendorID, sizeof device.vendorID, key);
     key = hashBytes(&device.deviceID, sizeof device.deviceID, key);
     key = hashBytes(&device.driverVersion, sizeof device.driverVersion, key);

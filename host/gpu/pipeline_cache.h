@@ -40,8 +40,9 @@ struct PipelineCache {
     std::vector<std::uint8_t> loaded; // what the file held, to skip rewriting the same bytes
 };
 
+// shaderKey names the shader the driver is given (its SPIR-V and specialization).
 PipelineCache openPipelineCache(const Context& context, const std::filesystem::path& directory,
-                                std::uint64_t spirvHash);
+                                std::uint64_t shaderKey);
 
 // Writes the driver's current data back when it differs from what was loaded.
 void savePipelineCache(const Context& context, const PipelineCache& cache);

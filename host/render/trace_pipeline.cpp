@@ -168,29 +168,33 @@ TracePipeline loadFromDirectory(const Context& context, const std::filesystem::p
                                specialization);
 }
 
+// The kernel as glslang compiles the embedded sources, through the cache under sourceKey.
+std::vector<std::uint32_t> compiledEmbeddedSpirv(const std::filesystem::path& cacheDirectory,
+                                                 std::uint64_t sourceKey, Precision precision) {
+    if (std::optional<std::vector<std::uint32_t>> cached =
+            loadCachedSpirv(cacheDirectory, sourceKey))
+        return std::move(*cached);
+    std::vector<std::uint32_t> spirv =
+        compileComputeShader("trace.comp", embeddedShaderLoader(), precisionPreamble(precision));
+    storeCachedSpirv(cacheDirectory, sourceKey, spirv);
+    return spirv;
+}
+
 TracePipeline loadEmbedded(const Context& context, const std::filesystem::path& cacheDirectory,
                            const TraceSpecialization& specialization, Precision precision) {
-    const std::uint64_t sourceKey = traceSourceKey(precision);
-    std::vector<std::uint32_t> spirv;
-    if (std::optional<std::vector<std::uint32_t>> cached =
-            loadCachedSpirv(cacheDirectory, sourceKey)) {
-        spirv = std::move(*cached);
-    } else {
-        spirv = compileComputeShader("trace.comp", embeddedShaderLoader(),
-                                     precisionPreamble(precision));
-        storeCachedSpirv(cacheDirectory, sourceKey, spirv);
-    }
     // One specialised module and one driver cache per specialization, as each compiles to
-    // different code (the struct has no padding: its bytes are its values).
-    const std::uint64_t spirvHash = hashBytes(spirv.data(), spirv.size() * sizeof(std::uint32_t));
+    // different code (the struct has no padding: its bytes are its values). sourceKey
+    // already names the compiled SPIR-V, so a warm start reads the specialised file alone.
+    const std::uint64_t sourceKey = traceSourceKey(precision);
     const std::uint64_t specializedKey =
-        hashBytes(&specialization, sizeof(specialization), spirvHash);
+        hashBytes(&specialization, sizeof(specialization), sourceKey);
     std::vector<std::uint32_t> specialized;
     if (std::optional<std::vector<std::uint32_t>> cached =
             loadCachedSpirv(cacheDirectory, specializedKey, SpirvStage::Specialized)) {
         specialized = std::move(*cached);
     } else {
-        specialized = specializedSpirv(spirv, specialization);
+        specialized = specializedSpirv(compiledEmbeddedSpirv(cacheDirectory, sourceKey, precision),
+                                       specialization);
         storeCachedSpirv(cacheDirectory, specializedKey, specialized, SpirvStage::Specialized);
     }
     PipelineCache cache = openPipelineCache(context, cacheDirectory, specializedKey);
