@@ -172,12 +172,13 @@ bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
     // (Mesa unrolls the loops over its constant length). Why not an array indexed by the
     // stack's size: lavapipe keeps such an array in memory and stores into it lane by lane,
     // each behind a branch on whether that lane is active, which mispredicted as rays
-    // diverged; a fifth of the 100k knot's kernel time, where the shifts cost a select per
-    // entry (docs/performance.md). One entry per level of the tree is enough: the stack
-    // holds at most one entry per level above the current node.
+    // diverged (a quarter of the 100k knot's JIT samples, tools/kernel_profile); the
+    // shifts cost a select per entry instead (docs/performance.md). One entry per level of the tree
+    // is enough: the stack holds at most one entry per level above the current node.
     uint stack[stackDepth];
     // Loops of this exact shape (an int counter against a constant) are the ones Mesa counts
-    // and unrolls; a uint one tested as i + 1u < stackDepth was not, and ran 2-3x slower.
+    // and unrolls; a uint one tested as i + 1u < stackDepth was not, and the kernel ran 2-3x
+    // slower (a patch, measured in docs/performance.md).
 #define STACK_LAST (int(stackDepth) - 1)
     uint stackSize = 0u;
     uint child = 0u; // the root: interior node 0

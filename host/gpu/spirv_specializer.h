@@ -6,9 +6,9 @@
 // Why: lavapipe translates the whole module to NIR and optimises it on every pipeline
 // creation, before it looks in its on-disk shader cache, so every start paid for the code
 // of every variant (the other sphere and triangle tests, samplers, ray offsets, the pixel
-// story). test2.scene's pipeline took 125-134 ms to create from the general module and
-// 39-44 ms from the specialised one (docs/performance.md); the specialisation itself takes
-// 30-50 ms and is cached on disk like the SPIR-V (host/render/trace_pipeline.cpp).
+// story). For test2.scene that took 144-223 ms from the general module and 66-79 ms from
+// the specialised one (docs/performance.md, measured with strace); the specialisation is
+// cached on disk like the SPIR-V (host/render/trace_pipeline.cpp).
 #pragma once
 
 #include <cstdint>

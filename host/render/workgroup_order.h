@@ -13,8 +13,8 @@
 // whole dispatch, whatever T. Rows, not single tiles: the kernel then computes one
 // remainder of a small product, exactly, with a float division (lavapipe has no vector
 // integer division; three of them per invocation cost test1.scene 4.6% of its
-// instructions). A GPU starts workgroups as its units free up, so the order does not matter
-// there; it runs the same mapping, one path for every device.
+// instructions). A GPU's scheduler starts workgroups as its units free up, so the order
+// should not matter there (not measured); it runs the same mapping, one path for every device.
 #pragma once
 
 #include <cstdint>
