@@ -1,14 +1,18 @@
 #!/usr/bin/env python3
-"""Write a Raytracer scene holding one smooth triangle mesh.
+"""Write a Raytracer scene holding one smooth triangle mesh, or the mesh alone as OBJ.
 
     python3 tools/make_mesh.py --shape torus --triangles 2000 --out FILE
+    python3 tools/make_mesh.py --shape knot --triangles 1000000 --out knot.obj
 
 Shapes: torus, sphere (UV sphere), knot (a (p,q) torus-knot tube). Every
 vertex carries its exact analytic surface normal, so the mesh shades smoothly.
 By default the scene also holds a ground made of two triangles, two spheres
 (one a mirror) and two coloured lights; --bare leaves only the mesh and the
 lights. The triangle count is approximate: the nearest count that the shape's
-grid can make (see --triangles).
+grid can make (see --triangles). An --out name ending in .obj writes the mesh
+alone as Wavefront OBJ (v, vn and f lines; with --color ramp each v carries
+its colour as `v x y z r g b`): Raytracer then adds the floor and lights of a
+model (docs/models.md), so the ground, spheres and lights are not written.
 
 Deterministic (no randomness, no clock), standard library only, O(N) time and
 memory in the number of vertices, and it prints nothing but errors. Numbers
@@ -194,7 +198,7 @@ def parse_args(argv):
     ap.add_argument("--shape", choices=sorted(SHAPES), default="torus")
     ap.add_argument("--triangles", type=int, default=2000,
                     help="approximate number of mesh triangles (>= 8)")
-    ap.add_argument("--out", required=True, help="scene file to write ('-' for stdout)")
+    ap.add_argument("--out", required=True, help="scene file to write ('-' for stdout), or NAME.obj for the mesh as OBJ")
     ap.add_argument("--center", type=vector, default=(0.0, 0.0, -4.0), metavar="X,Y,Z",
                     help="mesh centre (default 0,0,-4)")
     ap.add_argument("--scale", type=float, default=1.0, help="uniform scale (default 1)")
@@ -218,6 +222,26 @@ def parse_args(argv):
     if not a.shininess >= 0.0:
         ap.error("--shininess must not be negative")
     return a
+
+
+def write_obj(path, positions, normals, colors, triangles):
+    """The mesh as OBJ: one v (with its colour, if any) and one vn per vertex, one f each."""
+    with open(path, "w", newline="\n") as out:
+        out.write("# %d triangles, written by tools/make_mesh.py\n" % len(triangles))
+        chunk = []
+        for k, p in enumerate(positions):
+            colour = " " + vec(colors[k]) if colors else ""
+            chunk.append("v %s%s\n" % (vec(p), colour))
+        chunk.extend("vn %s\n" % vec(n) for n in normals)
+        out.writelines(chunk)
+        chunk = []
+        for (i, j, k) in triangles:
+            chunk.append("f %d//%d %d//%d %d//%d\n" % (i + 1, i + 1, j + 1, j + 1, k + 1, k + 1))
+            if len(chunk) >= 40000:
+                out.writelines(chunk)
+                chunk = []
+        out.writelines(chunk)
+    return 0
 
 
 def main(argv):
@@ -244,11 +268,15 @@ def main(argv):
                                        fmt(a.shininess))
     solid = (0.85, 0.55, 0.2)
     # Each vertex is formatted once; triangles reuse the text, so emitting is O(N).
+
+    def place(v):
+        p = rot(v)
+        return (ox + s * p[0], oy + s * p[1], oz + s * p[2])
+
     blocks = []
     ymin = math.inf
     for k in range(len(pos)):
-        p = rot(pos[k])
-        p = (ox + s * p[0], oy + s * p[1], oz + s * p[2])
+        p = place(pos[k])
         ymin = min(ymin, p[1])
         col = ramp(par[k]) if a.color == "ramp" else solid
         blocks.append("pos: %s\nnor: %s\ndif: %s\n%s" % (vec(p), vec(rot(nor[k])), vec(col), spe))
@@ -274,6 +302,10 @@ def main(argv):
                       % (vec((ox - 1.9 * s, g + r1, oz - 1.2 * s)), fmt(r1)))
         extras.append("sphere\npos: %s\nrad: %s\ndif: 0.2 0.35 0.8\nspe: 0.3 0.3 0.3\nshi: 60\n"
                       % (vec((ox + 1.8 * s, g + r2, oz + 0.2 * s)), fmt(r2)))
+
+    if a.out.lower().endswith(".obj"):
+        return write_obj(a.out, [place(p) for p in pos], [rot(n) for n in nor],
+                         [ramp(t) for t in par] if a.color == "ramp" else None, tris)
 
     count = len(lights) + len(extras) + len(tris)
     out = sys.stdout if a.out == "-" else open(a.out, "w", newline="\n")
