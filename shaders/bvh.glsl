@@ -1,4 +1,4 @@
-// Walking the bounding volume hierarchy (host/render/bvh.cpp builds it; node layout in shared.h),
+// Walking the bounding volume hierarchy (host/packing/bvh.cpp builds it; node layout in shared.h),
 // and the two scene queries shading uses, which walk it or test every primitive.
 // Needs: Ray (camera.glsl), the primitive tests and brute-force loops (intersect.glsl),
 // the node buffer and the specialization constants useHierarchy, sceneHasSpheres and

@@ -9,7 +9,7 @@
 // gamma(7) times the sum of the absolute terms that coordinate was computed from:
 // `magnitude`, so a coordinate is moved only as far as its own arithmetic can be off, and
 // a large x beside a small y does not lift the point in y. The flat patch of the triangle
-// the ray leaves (its coplanar neighbours; host/render/flat_patches.h) is skipped by its
+// the ray leaves (its coplanar neighbours; host/packing/flat_patches.h) is skipped by its
 // tests (Ray.leaving): a ray leaving a plane cannot meet it again, and the triangle test's
 // own error (which grows with the vertices' distance from the origin, not with the
 // point's) then cannot bring it back, for the triangle itself or for the other half of a

@@ -1,10 +1,10 @@
 // The single definition of everything the host and the shaders must agree on:
 // binding numbers, workgroup size, limits and the layout of every GPU struct.
-// Included by C++ (host/render/scene_packing.h) and by GLSL (trace.comp).
+// Included by C++ (host/packing/scene_packing.h) and by GLSL (trace.comp).
 //
 // Rules for the structs (std430): only vec4, uvec4 and scalars in groups of four,
 // never vec3 (std430 pads it to 16 bytes, glm::vec3 is 12), never bool.
-// The C++ side pins every size with static_assert in host/render/scene_packing.cpp.
+// The C++ side pins every size with static_assert in host/packing/scene_packing.cpp.
 #ifndef RAYTRACER_SHARED_H
 #define RAYTRACER_SHARED_H
 
@@ -29,11 +29,11 @@ using uint = std::uint32_t;
 #define MAX_DEPTH 64
 
 // Descriptor set 0. Each scene array has its own binding; all of them are
-// sub-ranges of one device buffer (see host/render/scene_packing.cpp).
+// sub-ranges of one device buffer (see host/packing/scene_packing.cpp).
 #define BINDING_OUTPUT_IMAGE 0     // rgba8 storage image the kernel writes
 #define BINDING_SPHERES 1          // vec4 per sphere: centre xyz, radius w
 #define BINDING_SPHERE_MATERIALS 2 // uint per sphere: index into materials
-// Triangles, in leaf order (host/render/scene_packing.h, gpuTriangleArrays): traversal reads
+// Triangles, in leaf order (host/packing/scene_packing.h, gpuTriangleArrays): traversal reads
 // a triangle's three corners and nothing else, three independent fetches; the vertex
 // indices that shading needs (normals, materials) are read for the hit alone.
 // rvec4 per corner, three per triangle: the corner's position xyz, the very floats
@@ -46,7 +46,7 @@ using uint = std::uint32_t;
 #define BINDING_VERTEX_NORMALS 5
 #define BINDING_MATERIALS 6    // GpuMaterial per distinct material
 #define BINDING_LIGHTS 7       // GpuLight per light
-#define BINDING_BVH_NODES 8    // GpuBvhNode per hierarchy node, depth first (host/render/bvh.h)
+#define BINDING_BVH_NODES 8    // GpuBvhNode per hierarchy node, depth first (host/packing/bvh.h)
 #define BINDING_ACCUMULATION 9 // vec4 per pixel, row major: the window's running sum of samples
 // The arrays read inside loops (traversal, primitives, bounces, lights), again, as uniform
 // texel buffers: views of the same ranges (SPEC_TEXEL_READS picks them over the above).
@@ -72,7 +72,7 @@ using uint = std::uint32_t;
 #define SPEC_USE_HIERARCHY 0 // walk the BVH (else test every primitive: scenes too small for one)
 #define SPEC_HAS_SPHERES 1   // the scene holds spheres (else their code is compiled out)
 #define SPEC_HAS_TRIANGLES 2 // the scene holds triangles (likewise)
-// The method choices of the command line (host/render/kernel_choices.h), and more of the scene.
+// The method choices of the command line (host/packing/kernel_choices.h), and more of the scene.
 #define SPEC_SAMPLER 3              // uint, SAMPLER_*: sample positions inside a pixel (--sampler)
 #define SPEC_STABLE_SPHERE_TEST 4   // bool: Ray Tracing Gems ch. 7, else the textbook quadratic
 #define SPEC_WATERTIGHT_TRIANGLES 5 // bool: Woop et al. 2013, else Moller-Trumbore
@@ -104,7 +104,7 @@ using uint = std::uint32_t;
 #define SAMPLER_STRATIFIED 1u
 #define SAMPLER_R2 2u
 
-// The bounding volume hierarchy (host/render/bvh.cpp builds it, shaders/bvh.glsl walks it).
+// The bounding volume hierarchy (host/packing/bvh.cpp builds it, shaders/bvh.glsl walks it).
 // Traversal keeps the far child of each interior node on a fixed stack of this many
 // entries, at most one per level, so the builder keeps every leaf within this depth.
 #define BVH_STACK_SIZE 32
@@ -154,7 +154,7 @@ struct GpuFrameParams {
     vec4 ambient;           // rgb ambient light added once per shading point, w unused
     vec4 camera;            // x: aspect * tan(fov/2), y: tan(fov/2), z: the stride of the
                             // workgroup rows' order over the dispatch's rows of tiles (the
-                            // uint's bits; host/render/workgroup_order.h), w unused
+                            // uint's bits; host/packing/workgroup_order.h), w unused
     vec4 cameraOrigin;      // the eye in world space: xyz, w unused (0 for the default camera)
     vec4 cameraOrientation; // unit quaternion xyzw, camera space to world (0,0,0,1 for the default
                             // camera)

@@ -26,7 +26,7 @@ layout(constant_id = SPEC_HAS_TRIANGLES) const bool sceneHasTriangles = true;
 layout(constant_id = SPEC_HAS_MIRRORS) const bool sceneHasMirrors = true;
 layout(constant_id = SPEC_HAS_SPECULAR) const bool sceneHasSpecular = true;
 
-// The method choices of the command line (host/render/kernel_choices.h); the defaults are the
+// The method choices of the command line (host/packing/kernel_choices.h); the defaults are the
 // robust methods, and the unchosen method is compiled out.
 layout(constant_id = SPEC_SAMPLER) const uint samplerKind = SAMPLER_R2;
 layout(constant_id = SPEC_STABLE_SPHERE_TEST) const bool stableSphereTest = true;
@@ -73,7 +73,7 @@ layout(set = 0, binding = BINDING_SPHERE_MATERIALS, std430) readonly buffer Sphe
     uint sphereMaterials[];
 };
 // Per triangle corner, three per triangle in leaf order: its position in xyz, and in w
-// corner 0's flat patch (host/render/flat_patches.h, ray_offset.glsl) or corner 1's and 2's
+// corner 0's flat patch (host/packing/flat_patches.h, ray_offset.glsl) or corner 1's and 2's
 // vertex indices, the vertices of corners 0 and 1 (shared.h; read with cornerWord).
 layout(set = 0, binding = BINDING_TRIANGLE_CORNERS, std430) readonly buffer CornerBuffer {
     rvec4 triangleCorners[];
@@ -173,7 +173,7 @@ uvec2 pixelInTile(uvec2 local) {
 // k take the tiles of row (k * stride) mod rows, stride coprime to rows (a permutation), so
 // that each worker thread of lavapipe, which takes one contiguous share of the workgroups,
 // gets rows from all over the image rather than one band of it
-// (host/render/workgroup_order.h). The remainder comes from a float division, exact for
+// (host/packing/workgroup_order.h). The remainder comes from a float division, exact for
 // these small numbers (workgroup_order.h says why): lavapipe has no vector integer division.
 uvec2 tileOfWorkgroup() {
     uint rows = gl_NumWorkGroups.y;

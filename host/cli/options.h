@@ -3,8 +3,8 @@
 #pragma once
 
 #include "base/output_format.h"
-#include "render/bvh.h"
-#include "render/kernel_choices.h"
+#include "packing/bvh.h"
+#include "packing/kernel_choices.h"
 #include "scene/camera.h"
 #include "scene/obj_scene.h"
 

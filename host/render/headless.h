@@ -4,7 +4,7 @@
 
 #include "base/float_image.h"
 #include "base/image_io.h"
-#include "render/progress.h"
+#include "base/progress.h"
 #include "render/region_planner.h"
 #include "render/renderer.h"
 

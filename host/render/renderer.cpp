@@ -3,7 +3,7 @@
 #include "base/notes.h"
 #include "base/scope_guard.h"
 #include "gpu/vk_check.h"
-#include "render/workgroup_order.h"
+#include "packing/workgroup_order.h"
 #include "shared.h"
 
 #include <algorithm>

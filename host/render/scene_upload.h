@@ -2,7 +2,7 @@
 #pragma once
 
 #include "gpu/resources.h"
-#include "render/scene_packing.h"
+#include "packing/scene_packing.h"
 
 #include <string>
 

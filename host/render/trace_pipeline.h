@@ -2,7 +2,7 @@
 #pragma once
 
 #include "gpu/context.h"
-#include "render/kernel_choices.h"
+#include "packing/kernel_choices.h"
 
 #include <cstdint>
 #include <filesystem>

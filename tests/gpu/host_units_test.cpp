@@ -3,9 +3,9 @@
 #include "gpu/context.h"
 #include "gpu/shader_compiler.h"
 #include "gpu/spirv_specializer.h"
+#include "packing/scene_packing.h"
 #include "render/kernel_sources.h"
 #include "render/renderer.h"
-#include "render/scene_packing.h"
 #include "render/trace_pipeline.h"
 
 #include <gtest/gtest.h>

@@ -17,10 +17,11 @@ ALLOWED = {
     "base": set(),
     "scene": {"base"},
     "gpu": {"base"},
-    "render": {"base", "scene", "gpu"},
-    "cli": {"base", "scene", "gpu", "render"},
-    "window": {"base", "scene", "gpu", "render", "cli"},
-    ".": {"base", "scene", "gpu", "render", "cli", "window"},  # main.cpp, bench.*
+    "packing": {"base", "scene"},
+    "render": {"base", "scene", "gpu", "packing"},
+    "cli": {"base", "scene", "gpu", "packing", "render"},
+    "window": {"base", "scene", "gpu", "packing", "render", "cli"},
+    ".": {"base", "scene", "gpu", "packing", "render", "cli", "window"},  # main.cpp, bench.*
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s+["<]([^">]+)[">]', re.M)
 

@@ -1,10 +1,10 @@
-// The hierarchy builder (host/render/bvh.cpp) and the packer's leaf order, without a GPU: the
+// The hierarchy builder (host/packing/bvh.cpp) and the packer's leaf order, without a GPU: the
 // tree is well formed in the two-wide layout of shared.h (child references round-trip,
 // leaves in their parent's reference), covers every primitive once, bounds what it holds,
 // numbers leaves in depth-first order, respects the traversal stack's depth limit on
 // adversarial input, and splits where SAH should.
-#include "render/bvh.h"
-#include "render/scene_packing.h"
+#include "packing/bvh.h"
+#include "packing/scene_packing.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-// Flat patches (host/render/flat_patches.h): which triangles the kernel's secondary rays skip
+// Flat patches (host/packing/flat_patches.h): which triangles the kernel's secondary rays skip
 // together. Each case is a mesh whose patches are known by construction.
-#include "render/flat_patches.h"
+#include "packing/flat_patches.h"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // word for word, -o's formats by name, PPM bytes by hand, the no-display fallback's next
 // free name, and drivers' version numbers.
 #include "base/output_format.h"
+#include "base/progress.h"
 #include "gpu/device_list.h"
-#include "render/progress.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // The order of a dispatch's rows of workgroups over its rows of tiles
-// (host/render/workgroup_order.h): a permutation for every dispatch height the renderer
+// (host/packing/workgroup_order.h): a permutation for every dispatch height the renderer
 // makes, the same remainder as the kernel's float arithmetic, and one that gives each
 // contiguous share of the workgroups (what one lavapipe worker thread takes) rows from the
 // whole image, not a band of it.
-#include "render/workgroup_order.h"
+#include "packing/workgroup_order.h"
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 // are stored once, and a sphere pays for no triangle fields.
 #pragma once
 
-#include "render/bvh.h"
-#include "render/kernel_choices.h"
+#include "packing/bvh.h"
+#include "packing/kernel_choices.h"
 #include "scene/scene.h"
 #include "shared.h"
 

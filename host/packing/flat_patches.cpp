@@ -1,4 +1,4 @@
-#include "render/flat_patches.h"
+#include "packing/flat_patches.h"
 
 #include <algorithm>
 #include <cmath>

@@ -15,7 +15,7 @@
 // splits from there would reach is split at the centroid median instead, which halves
 // the count at each level; all-equal centroids (identical primitives) are split by
 // position in the array. The depth limit therefore holds for any input.
-#include "render/bvh.h"
+#include "packing/bvh.h"
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,6 @@
-#include "render/scene_packing.h"
+#include "packing/scene_packing.h"
 
-#include "render/flat_patches.h"
+#include "packing/flat_patches.h"
 
 #include <algorithm>
 #include <bit>

@@ -1,4 +1,4 @@
-#include "render/workgroup_order.h"
+#include "packing/workgroup_order.h"
 
 #include <cmath>
 #include <numeric>

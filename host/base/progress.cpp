@@ -1,4 +1,4 @@
-#include "render/progress.h"
+#include "base/progress.h"
 
 #include "base/notes.h"
 
