@@ -1,6 +1,7 @@
 #include "bench.h"
 
-#include "base/bench_json.h"
+#include "base/json.h"
+#include "base/median.h"
 
 #include <algorithm>
 #include <cstdio>

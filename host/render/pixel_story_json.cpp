@@ -3,22 +3,21 @@
 // fields for the CPU reference; tools/pixel_story puts the two side by side.
 #include "render/pixel_story.h"
 
-#include <cmath>
-#include <cstdio>
+#include "base/json.h"
+
 #include <string>
 
 namespace {
 
-// A float as JSON: 9 significant digits (enough to give the float back), null if not finite.
+// The kernel's floats to 9 significant digits, which give each float back exactly.
+constexpr int kFloatDigits = 9;
+
 std::string number(float value) {
-    if (!std::isfinite(value)) return "null";
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", double(value));
-    return text;
+    return jsonNumber(value, kFloatDigits);
 }
 
 std::string triple(const glm::vec4& v) {
-    return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]";
+    return jsonTriple(v, kFloatDigits);
 }
 
 const char* kindName(std::uint32_t kind) {
@@ -104,15 +103,10 @@ std::string pixelStoryJson(const gpu::GpuPixelStory& story, const SlotSources& s
                            const StoryHeader& header) {
     const std::uint32_t lights = story.counts.y;
     const std::uint32_t recorded = lights < MAX_STORY_LIGHTS ? lights : MAX_STORY_LIGHTS;
-    std::string scene;
-    for (char c : header.scene) { // a path as a JSON string
-        if (c == '"' || c == '\\') scene += '\\';
-        if (static_cast<unsigned char>(c) >= 0x20) scene += c;
-    }
-    std::string text = "{\"renderer\": \"gpu\", \"scene\": \"" + scene + "\", \"pixel\": [" +
-                       std::to_string(header.x) + ", " + std::to_string(header.y) +
-                       "], \"image\": [" + std::to_string(header.width) + ", " +
-                       std::to_string(header.height) +
+    std::string text = "{\"renderer\": \"gpu\", \"scene\": " + jsonString(header.scene) +
+                       ", \"pixel\": [" + std::to_string(header.x) + ", " +
+                       std::to_string(header.y) + "], \"image\": [" + std::to_string(header.width) +
+                       ", " + std::to_string(header.height) +
                        "], \"spp\": " + std::to_string(header.samples) +
                        ", \"depth\": " + std::to_string(header.depth) + ",\n";
     text += " \"sample\": 0, \"sample_offset\": [" + number(story.sampleOffset.x) + ", " +

@@ -3,6 +3,7 @@
 // --bench-window.
 #include "window/capture.h"
 
+#include "base/json.h"
 #include "cli/command_line.h"
 #include "window/screenshot.h"
 
@@ -67,13 +68,13 @@ void finishBenchIfDone(Viewer& viewer) {
     if (viewer.benchFrames == 0 || viewer.benchCounted <= viewer.benchFrames) return;
     const double seconds = std::chrono::duration<double>(Clock::now() - viewer.benchStart).count();
     const Image& output = viewer.renderer.outputImage;
-    std::printf(
-        "{\"scene\": \"%s\", \"device\": \"%s\", \"width\": %u, \"height\": %u, \"frames\": %u, "
-        "\"seconds\": %.3f, \"fps\": %.2f, \"samples_per_frame\": 1, \"megasamples_per_second\": "
-        "%.3f}\n",
-        viewer.sceneName.c_str(), viewer.context.properties.deviceName, output.width, output.height,
-        viewer.benchFrames, seconds, viewer.benchFrames / seconds,
-        double(viewer.benchSamples) * output.width * output.height / seconds * 1e-6);
+    std::printf("{\"scene\": %s, \"device\": %s, \"width\": %u, \"height\": %u, \"frames\": %u, "
+                "\"seconds\": %.3f, \"fps\": %.2f, \"samples_per_frame\": 1, "
+                "\"megasamples_per_second\": %.3f}\n",
+                jsonString(viewer.sceneName).c_str(),
+                jsonString(viewer.context.properties.deviceName).c_str(), output.width,
+                output.height, viewer.benchFrames, seconds, viewer.benchFrames / seconds,
+                double(viewer.benchSamples) * output.width * output.height / seconds * 1e-6);
     std::fflush(stdout);
     glfwSetWindowShouldClose(viewer.window, GLFW_TRUE);
 }

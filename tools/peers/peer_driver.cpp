@@ -1,6 +1,7 @@
 #include "peer_driver.h"
 
-#include "base/bench_json.h"
+#include "base/json.h"
+#include "base/median.h"
 #include "scene/scene_loader.h"
 
 #include <algorithm>

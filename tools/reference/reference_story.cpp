@@ -2,20 +2,19 @@
 // nesting of Raytracer --pixel (host/render/pixel_story_json.cpp), numbers to 17 digits.
 #include "reference_story.h"
 
-#include <cmath>
-#include <cstdio>
+#include "base/json.h"
 
 namespace {
 
+// Doubles to 17 significant digits, which give each double back exactly.
+constexpr int kDoubleDigits = 17;
+
 std::string number(double value) {
-    if (!std::isfinite(value)) return "null";
-    char text[40];
-    std::snprintf(text, sizeof text, "%.17g", value);
-    return text;
+    return jsonNumber(value, kDoubleDigits);
 }
 
 std::string triple(const glm::dvec3& v) {
-    return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]";
+    return jsonTriple(v, kDoubleDigits);
 }
 
 std::string primitive(const StoryPrimitive& p) {
@@ -64,15 +63,11 @@ std::string bounceJson(const StoryBounceRecord& b, std::size_t index, const Scen
 std::string referenceStoryJson(const ReferenceStory& story, const Scene& scene,
                                const ReferenceSettings& settings, const std::string& scenePath,
                                int i, int j) {
-    std::string path;
-    for (char c : scenePath) { // a path as a JSON string
-        if (c == '"' || c == '\\') path += '\\';
-        if (static_cast<unsigned char>(c) >= 0x20) path += c;
-    }
     const std::string lights = std::to_string(scene.lights.size());
-    std::string text = "{\"renderer\": \"reference\", \"scene\": \"" + path + "\", \"pixel\": [" +
-                       std::to_string(i) + ", " + std::to_string(j) + "], \"image\": [" +
-                       std::to_string(settings.width) + ", " + std::to_string(settings.height) +
+    std::string text = "{\"renderer\": \"reference\", \"scene\": " + jsonString(scenePath) +
+                       ", \"pixel\": [" + std::to_string(i) + ", " + std::to_string(j) +
+                       "], \"image\": [" + std::to_string(settings.width) + ", " +
+                       std::to_string(settings.height) +
                        "], \"spp\": " + std::to_string(settings.spp) +
                        ", \"depth\": " + std::to_string(settings.depth) + ",\n";
     text += " \"sample\": 0, \"sample_offset\": [" + number(story.sampleOffset.x) + ", " +
