@@ -2,6 +2,7 @@
 // one try/catch that turns every failure into a message and an exit status.
 #include "base/notes.h"
 #include "base/output_format.h"
+#include "base/parallel.h"
 #include "base/scope_guard.h"
 #include "batch.h"
 #include "bench.h"
@@ -113,6 +114,7 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
     Options options = parseOptions(argc, argv);
     setQuiet(options.quiet);
     requestCpuDriverThreads(options.cpuThreads); // before any Vulkan call reads it
+    setWorkerThreads(options.cpuThreads);        // the host's own threads, the same count
     if (options.showHelp) {
         std::cout << usageText();
         return kSuccess;

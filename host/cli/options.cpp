@@ -301,8 +301,8 @@ std::string usageText() {
            "  --device NAME|INDEX   use this Vulkan device (default: a real GPU before a CPU one)\n"
            "  --list-devices        print every Vulkan device (index, name, type, driver, fp64,\n"
            "                        limits) and exit; --device takes the index or the name\n"
-           "  --threads N           worker threads of a CPU device (lavapipe; default: one per\n"
-           "                        core)\n"
+           "  --threads N           threads of the host's work (loading, the hierarchy) and of a\n"
+           "                        CPU device (lavapipe) (default: one per core)\n"
            "  --accel auto|bvh|none  bounding volume hierarchy, or test every primitive (default\n"
            "                        auto: the hierarchy from " +
            std::to_string(kBvhAutoThreshold) +

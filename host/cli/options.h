@@ -29,7 +29,7 @@ struct Options {
     double fovDegrees = 60.0;
     std::uint32_t benchFrames = 0; // > 0: --bench N
     std::string device;            // --device NAME|INDEX; empty picks the best
-    std::uint32_t cpuThreads = 0;  // --threads N: lavapipe's worker threads; 0: its default
+    std::uint32_t cpuThreads = 0;  // --threads N: the host's threads and lavapipe's; 0: defaults
     bool validate = false;         // --validate: Khronos layer on, any message fails the run
     Acceleration acceleration = Acceleration::Auto; // --accel auto|bvh|none
     bool showHelp = false;

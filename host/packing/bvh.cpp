@@ -17,11 +17,12 @@
 // position in the array. The depth limit therefore holds for any input.
 #include "packing/bvh.h"
 
+#include "base/parallel.h"
+
 #include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
-#include <future>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -80,6 +81,7 @@ class Builder {
   public:
     Builder(const PrimitiveBounds& input, const BvhSettings& settings)
         : boxes_(input.boxes.data()), sphereCount_(input.sphereCount), settings_(settings),
+          threads_(settings.threads ? settings.threads : workerThreads()),
           centroids_(input.size() * 3) {
         order.resize(input.size());
         for (std::size_t id = 0; id < order.size(); ++id) {
@@ -124,12 +126,17 @@ class Builder {
         const std::uint32_t self = std::uint32_t(out.size());
         out.emplace_back();
         Subtree leftTree, rightTree;
-        if (depth < kParallelDepth && n >= kParallelMinimum && settings_.threads > 1) {
+        if (depth < kParallelDepth && n >= kParallelMinimum && threads_ > 1) {
             std::vector<gpu::GpuBvhNode> leftNodes, rightNodes;
-            auto leftTask =
-                std::async(std::launch::async, [&] { return build(left, depth + 1, leftNodes); });
-            rightTree = build(right, depth + 1, rightNodes);
-            leftTree = leftTask.get();
+            parallelFor(
+                2,
+                [&](std::size_t side) {
+                    if (side == 0)
+                        leftTree = build(left, depth + 1, leftNodes);
+                    else
+                        rightTree = build(right, depth + 1, rightNodes);
+                },
+                2);
             splice(leftNodes, leftTree.child, out);
             splice(rightNodes, rightTree.child, out);
         } else {
@@ -278,6 +285,7 @@ class Builder {
     const float* boxes_;
     std::uint32_t sphereCount_;
     BvhSettings settings_;
+    unsigned threads_;             // above 1: the top subtrees are built two at a time
     std::vector<float> centroids_; // 3 floats per primitive
 };
 

@@ -35,7 +35,9 @@ struct BvhSettings {
     std::uint32_t maxLeafSize = 8;           // a range at most this big may become a leaf
     std::uint32_t maxDepth = BVH_STACK_SIZE; // no leaf deeper (root at depth 0)
     float traversalCost = 2.0f; // cost of visiting a node (two box tests), in primitive tests
-    std::uint32_t threads = 2;  // threads for the top-level subtrees
+    // Above 1, the top levels' two subtrees are built at once (up to four threads in all);
+    // 0: workerThreads() (base/parallel.h). The tree is the same for every count.
+    std::uint32_t threads = 0;
 };
 
 struct Bvh {

@@ -1,12 +1,13 @@
 #include "scene/scene_lexer.h"
 
+#include "base/parallel.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <system_error>
-#include <thread>
 
 namespace scene_lexer {
 namespace {
@@ -215,7 +216,7 @@ std::size_t objectKeywordBetween(std::string_view text, std::size_t from, std::s
 
 std::vector<std::size_t> chunkStarts(std::string_view text, unsigned threads,
                                      std::size_t minChunkBytes) {
-    if (threads == 0) threads = std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
+    if (threads == 0) threads = workerThreads();
     const std::size_t chunks =
         std::min<std::size_t>(threads, text.size() / std::max<std::size_t>(minChunkBytes, 1));
     std::vector<std::size_t> starts{0};

@@ -95,8 +95,8 @@ struct Tokenizer {
     }
 };
 
-// Where each of up to `threads` readers of a large text starts (0: one per hardware
-// thread, at most 8): 0 for the first, then the first object keyword ('sphere',
+// Where each of up to `threads` readers of a large text starts (0: workerThreads(),
+// base/parallel.h): 0 for the first, then the first object keyword ('sphere',
 // 'triangle', 'light' in any case, a whole token) at or after each further equal share,
 // skipping a share that holds none. No reader gets less than minChunkBytes.
 std::vector<std::size_t> chunkStarts(std::string_view text, unsigned threads,

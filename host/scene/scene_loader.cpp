@@ -9,6 +9,7 @@
 // message, line number and warning is exactly what reading the file in one pass gives.
 #include "scene/scene_loader.h"
 
+#include "base/parallel.h"
 #include "scene/mapped_file.h"
 #include "scene/obj_reader.h"
 #include "scene/obj_scene.h"
@@ -22,7 +23,6 @@
 #include <stop_token>
 #include <sys/mman.h>
 #include <system_error>
-#include <thread>
 
 using scene_lexer::Tokenizer;
 using scene_parser::kNowhere;
@@ -99,27 +99,34 @@ Scene parseText(std::string_view text, const std::string& fileName,
         ahead.back().stopAt = k + 1 < starts.size() ? starts[k + 1] : kNowhere;
         ahead.back().sizeUntil = k + 1 < starts.size() ? starts[k + 1] : text.size();
     }
+    // Reader 0 is the first, from the header on; reader k > 0 reads ahead[k - 1]. When the
+    // first finds the file's end before its chunk's, or throws, the others are told to stop.
     std::vector<char> complete(ahead.size(), 0);
-    {
-        // On an exception from the first reader, the workers are told to stop and joined.
-        std::vector<std::jthread> workers;
-        for (std::size_t k = 0; k < ahead.size(); ++k)
-            workers.emplace_back([&, k](std::stop_token cancel) {
-                try {
-                    complete[k] = ahead[k].readChunk(cancel);
-                } catch (...) {
-                    // Read again in order below, which says what is wrong.
-                }
-            });
-        first.stopAt = starts.size() > 1 ? starts[1] : kNowhere;
-        first.readHeader();
-        if (!first.readObjects()) {
-            first.expectEnd();
-            return joinScenes({{&first, 1}});
+    std::stop_source cancel;
+    bool endedEarly = false;
+    first.stopAt = starts.size() > 1 ? starts[1] : kNowhere;
+    parallelFor(starts.size(), [&](std::size_t reader) {
+        if (reader > 0) {
+            try {
+                complete[reader - 1] = ahead[reader - 1].readChunk(cancel.get_token());
+            } catch (...) {
+                // Read again in order below, which says what is wrong.
+            }
+            return;
         }
-        for (std::jthread& worker : workers)
-            worker.join();
-    }
+        try {
+            first.readHeader();
+            if (!first.readObjects()) {
+                endedEarly = true;
+                cancel.request_stop();
+                first.expectEnd();
+            }
+        } catch (...) {
+            cancel.request_stop();
+            throw;
+        }
+    });
+    if (endedEarly) return joinScenes({{&first, 1}});
 
     // Confirm the chunks in order while the counts add up.
     std::vector<std::pair<Reader*, int>> parts{{&first, 1}};

@@ -19,7 +19,7 @@ Scene parseScene(std::string_view text, const std::string& fileName);
 // the same for any setting; the defaults suit every caller, and the tests shrink the
 // chunks to take the parallel path on small texts.
 struct SceneParseOptions {
-    unsigned threads = 0;                 // 0: one per hardware thread, at most 8
+    unsigned threads = 0;                 // 0: workerThreads() (base/parallel.h)
     std::size_t minChunkBytes = 1u << 20; // no thread gets less text than this
 };
 Scene parseScene(std::string_view text, const std::string& fileName,

@@ -1,11 +1,18 @@
-// The small helpers of host/base/ that every report goes through: JSON text (base/json.h).
+// The small helpers of host/base/ that every report and every thread goes through: JSON
+// text (base/json.h) and the thread policy and parallel loops (base/parallel.h).
 #include "base/json.h"
+#include "base/parallel.h"
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <limits>
-#include <string>
+#include <mutex>
+#include <set>
+#include <stdexcept>
+#include <thread>
+#include <vector>
 
 TEST(Json, StringsEscapeQuotesBackslashesAndControlCharacters) {
     EXPECT_EQ(jsonString("plain"), "\"plain\"");
@@ -25,4 +32,71 @@ TEST(Json, NumbersHaveTheirDigitsAndNonFiniteValuesAreNull) {
         float x, y, z;
     };
     EXPECT_EQ(jsonTriple(Vector{1.0f, -2.5f, NAN}, 9), "[1, -2.5, null]");
+}
+
+TEST(Parallel, ThreadPolicyIsTheRequestedCountElseTheHardwares) {
+    setWorkerThreads(3);
+    EXPECT_EQ(workerThreads(), 3u);
+    setWorkerThreads(0);
+    EXPECT_EQ(workerThreads(), std::max(1u, std::thread::hardware_concurrency()));
+}
+
+TEST(Parallel, EveryIndexRunsOnceOnAtMostTheGivenThreads) {
+    for (unsigned threads : {1u, 2u, 4u}) {
+        std::vector<std::atomic<int>> runs(1000);
+        std::mutex lock;
+        std::set<std::thread::id> seen;
+        parallelFor(
+            runs.size(),
+            [&](std::size_t i) {
+                ++runs[i];
+                const std::lock_guard<std::mutex> hold(lock);
+                seen.insert(std::this_thread::get_id());
+            },
+            threads);
+        for (const auto& count : runs)
+            ASSERT_EQ(count.load(), 1);
+        EXPECT_LE(seen.size(), threads);
+    }
+    parallelFor(
+        0, [](std::size_t) { FAIL() << "no index to run"; }, 2);
+}
+
+TEST(Parallel, PerThreadBodiesAreMadeOncePerThread) {
+    std::atomic<int> made{0};
+    std::vector<int> done(64, 0);
+    parallelForPerThread(
+        done.size(),
+        [&]() -> IndexBody {
+            ++made;
+            return [&](std::size_t i) { done[i] = 1; };
+        },
+        2);
+    EXPECT_LE(made.load(), 2);
+    EXPECT_GE(made.load(), 1);
+    for (int d : done)
+        EXPECT_EQ(d, 1);
+}
+
+TEST(Parallel, TheLowestFailingIndexIsRethrownAfterEveryThreadStopped) {
+    for (unsigned threads : {1u, 2u, 3u}) {
+        std::atomic<int> running{0};
+        try {
+            parallelFor(
+                100,
+                [&](std::size_t i) {
+                    ++running;
+                    if (i == 7 || i == 9) {
+                        --running;
+                        throw std::runtime_error("index " + std::to_string(i));
+                    }
+                    --running;
+                },
+                threads);
+            FAIL() << "no exception";
+        } catch (const std::runtime_error& error) {
+            EXPECT_EQ(running.load(), 0);
+            EXPECT_STREQ(error.what(), "index 7") << threads << " threads";
+        }
+    }
 }

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <functional>
 #include <numeric>
 
@@ -371,6 +372,22 @@ TEST(Bvh, TwoHundredThousandTrianglesBuild) {
     std::printf("200k triangles: %zu nodes, depth %u, built in %.1f ms\n", bvh.nodes.size(),
                 bvh.depth, ms);
     expectWellFormed(bvh, input);
+}
+
+TEST(Bvh, TheTreeIsTheSameOnOneThreadAsOnSeveral) {
+    // Large enough that the top subtrees are built at once (kParallelMinimum in bvh.cpp).
+    const PrimitiveBounds input = randomScene(500, 70000);
+    BvhSettings one, four;
+    one.threads = 1;
+    four.threads = 4;
+    const Bvh serial = buildBvh(input, one), parallel = buildBvh(input, four);
+    ASSERT_EQ(serial.nodes.size(), parallel.nodes.size());
+    EXPECT_EQ(std::memcmp(serial.nodes.data(), parallel.nodes.data(),
+                          serial.nodes.size() * sizeof(gpu::GpuBvhNode)),
+              0);
+    EXPECT_EQ(serial.sphereOrder, parallel.sphereOrder);
+    EXPECT_EQ(serial.triangleOrder, parallel.triangleOrder);
+    EXPECT_EQ(serial.depth, parallel.depth);
 }
 
 Vertex vertexAt(glm::dvec3 position) {

@@ -1,8 +1,9 @@
-// A whole image with the shared model (cpu_model.h) on N std::threads: the default camera,
-// clamped samples averaged, bytes as floor(c * 255 + 0.5).
+// A whole image with the shared model (cpu_model.h) on N threads (base/parallel.h): the default
+// camera, clamped samples averaged, bytes as floor(c * 255 + 0.5).
 #pragma once
 
 #include "base/image_io.h"
+#include "base/parallel.h"
 #include "cpu_model.h"
 
 #include <glm/glm.hpp>
@@ -11,10 +12,9 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <numbers>
 #include <span>
-#include <system_error>
-#include <thread>
 #include <vector>
 
 struct PeerRenderSettings {
@@ -65,14 +65,22 @@ std::uint64_t renderImage(const PeerScene& scene, const Intersector& intersector
     const float tanY = float(tanHalfY);
     const float tanX = float(tanHalfY * settings.width / settings.height);
 
-    std::atomic<int> nextRow{0};
     std::atomic<std::uint64_t> totalRays{0};
-    auto work = [&] {
-        decltype(auto) worker = intersector.worker(); // a reference where it holds no state
-        RayCount count;
-        std::vector<PeerRay> primary; // the row's primary rays, pixel by pixel, sample by sample
+    // Each thread's own: the intersector's worker (a reference where it holds no state) and
+    // the row's primary rays (pixel by pixel, sample by sample) and hits.
+    struct ThreadState {
+        decltype(intersector.worker()) worker;
+        std::vector<PeerRay> primary;
         std::vector<PeerHit> hits;
-        for (int j = nextRow++; j < settings.height; j = nextRow++) {
+    };
+    auto makeRowBody = [&]() -> IndexBody {
+        auto state = std::make_shared<ThreadState>(ThreadState{intersector.worker(), {}, {}});
+        return [&, state](std::size_t row) {
+            const int j = int(row);
+            auto& worker = state->worker;
+            std::vector<PeerRay>& primary = state->primary;
+            std::vector<PeerHit>& hits = state->hits;
+            RayCount count;
             primary.clear();
             for (int i = 0; i < settings.width; ++i) {
                 for (glm::vec2 o : offsets) {
@@ -105,19 +113,9 @@ std::uint64_t renderImage(const PeerScene& scene, const Intersector& intersector
                 out[2] = quantize(sum.z);
                 out[3] = 255;
             }
-        }
-        totalRays += count.rays;
+            totalRays += count.rays;
+        };
     };
-    std::vector<std::thread> pool;
-    for (int k = 1; k < std::min(threads, settings.height); ++k) {
-        try {
-            pool.emplace_back(work);
-        } catch (const std::system_error&) {
-            break; // no more threads to be had: the ones running share the rows
-        }
-    }
-    work();
-    for (std::thread& thread : pool)
-        thread.join();
+    parallelForPerThread(std::size_t(settings.height), makeRowBody, unsigned(std::max(threads, 1)));
     return totalRays;
 }

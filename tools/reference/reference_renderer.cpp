@@ -30,21 +30,19 @@
 // triangles are dropped up front (no ray can hit them; the parser warns).
 //
 // Speed: brute force over every primitive for every ray (no acceleration
-// structure that could itself be wrong), rows spread over std::threads.
+// structure that could itself be wrong), rows spread over threads (base/parallel.h).
 #include "reference_renderer.h"
 #include "reference_story.h"
 
+#include "base/parallel.h"
+
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
 #include <functional>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
-#include <system_error>
-#include <thread>
 #include <vector>
 
 using glm::dvec3;
@@ -433,43 +431,22 @@ glm::dvec3 tracePixel(const Scene& scene, const ReferenceSettings& settings, int
 
 namespace {
 
-// Calls store(i, j, colour) for every pixel, with the rows shared among threads; store
-// writes disjoint pixels, so it needs no lock.
+// Calls store(i, j, colour) for every pixel, with the rows shared among threads (0: the
+// host's policy, base/parallel.h); store writes disjoint pixels, so it needs no lock.
 template <typename Store>
 void renderPixels(const Scene& scene, const ReferenceSettings& settings, int threads,
                   const Store& store) {
     const Camera camera = makeCamera(settings);
     const World world = prepareWorld(scene);
-    if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
-    threads = std::min(threads, settings.height);
-    // Rows are handed out one at a time, so an expensive part of the image
-    // (a reflective mesh) does not leave the other threads idle.
-    std::atomic<int> nextRow{0};
-    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
-    auto work = [&](std::exception_ptr& error) {
-        try {
+    parallelFor(
+        std::size_t(settings.height),
+        [&](std::size_t row) {
+            const int j = int(row);
             std::vector<Bounce> path;
-            for (int j = nextRow++; j < settings.height; j = nextRow++)
-                for (int i = 0; i < settings.width; ++i)
-                    store(i, j, pixelColor(world, settings, camera, i, j, path));
-        } catch (...) {
-            error = std::current_exception();
-            nextRow = settings.height; // stop the others early
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int k = 1; k < threads; ++k) {
-        try {
-            pool.emplace_back(work, std::ref(errors[std::size_t(k)]));
-        } catch (const std::system_error&) {
-            break; // no more threads to be had: the ones running share the rows
-        }
-    }
-    work(errors[0]);
-    for (std::thread& thread : pool)
-        thread.join();
-    for (const std::exception_ptr& error : errors)
-        if (error) std::rethrow_exception(error);
+            for (int i = 0; i < settings.width; ++i)
+                store(i, j, pixelColor(world, settings, camera, i, j, path));
+        },
+        unsigned(std::max(threads, 0)));
 }
 
 } // namespace

@@ -22,7 +22,7 @@ struct ReferenceSettings {
     bool truncate = false;
 };
 
-// Renders the whole image. threads = 0 uses std::thread::hardware_concurrency().
+// Renders the whole image. threads = 0 uses the host's policy (workerThreads(), base/parallel.h).
 // Throws std::invalid_argument for a non-positive size or spp, a negative depth or
 // a field of view outside (0, 180) degrees, or a camera whose target is its position or
 // whose up is parallel to the view.

@@ -1,0 +1,29 @@
+// Every thread the host starts comes from here: one thread-count policy (--threads N, else
+// the hardware's threads) and one way to share work among threads.
+//
+// The work is handed out one index at a time, so an expensive part (a reflective mesh's
+// rows, a large subtree) does not leave the other threads idle; the result never depends
+// on which thread ran which index, so callers write each index's result to its own slot.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+
+// The threads host work may use: setWorkerThreads's count, else one per hardware thread.
+unsigned workerThreads();
+// --threads N; 0 goes back to one per hardware thread.
+void setWorkerThreads(unsigned threads);
+
+// Calls body(i) for every i in [0, count) on up to `threads` threads at once (the calling
+// thread among them; 0: workerThreads()) and returns when every call has returned. After
+// a call throws, no further index is handed out; the exception of the lowest index that
+// threw is rethrown once all threads have stopped. Where a thread cannot be started the
+// ones running share the work.
+void parallelFor(std::size_t count, const std::function<void(std::size_t)>& body,
+                 unsigned threads = 0);
+
+// The same for work that keeps state per thread (scratch buffers, a ray query's context):
+// each thread calls makeBody() once, then gives every index it takes to the body it got.
+using IndexBody = std::function<void(std::size_t)>;
+void parallelForPerThread(std::size_t count, const std::function<IndexBody()>& makeBody,
+                          unsigned threads = 0);
