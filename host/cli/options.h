@@ -3,6 +3,7 @@
 #pragma once
 
 #include "base/output_format.h"
+#include "cli/usage_error.h"
 #include "packing/bvh.h"
 #include "packing/kernel_choices.h"
 #include "scene/camera.h"
@@ -88,11 +89,6 @@ const ChoiceNames<UpAxis>& upAxisNames();
 // How loadScene makes an OBJ model a scene for these options: theirs, and the view's field
 // of view and aspect ratio for the framing.
 ObjSceneSetup objSceneSetup(const Options& options);
-
-// A command line that does not make sense; what() is the message for the user.
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
 
 Options parseOptions(int argc, const char* const* argv);
 
