@@ -1,6 +1,7 @@
 // The single definition of everything the host and the shaders must agree on:
 // binding numbers, workgroup size, limits and the layout of every GPU struct.
-// Included by C++ (host/packing/scene_packing.h) and by GLSL (trace.comp).
+// Included by GLSL (trace.comp) and by the C++ that needs a binding, a limit or a GPU struct:
+// the packer (host/packing/), the renderer (host/render/), the options (host/cli/) and tests.
 //
 // Rules for the structs (std430): only vec4, uvec4 and scalars in groups of four,
 // never vec3 (std430 pads it to 16 bytes, glm::vec3 is 12), never bool.
@@ -29,7 +30,7 @@ using uint = std::uint32_t;
 #define MAX_DEPTH 64
 
 // Descriptor set 0. Each scene array has its own binding; all of them are
-// sub-ranges of one device buffer (see host/packing/scene_packing.cpp).
+// sub-ranges of one device buffer (host/render/scene_upload.cpp lays them out).
 #define BINDING_OUTPUT_IMAGE 0     // rgba8 storage image the kernel writes
 #define BINDING_SPHERES 1          // vec4 per sphere: centre xyz, radius w
 #define BINDING_SPHERE_MATERIALS 2 // uint per sphere: index into materials
