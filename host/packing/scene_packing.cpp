@@ -1,6 +1,8 @@
 #include "packing/scene_packing.h"
 
+#include "base/deduplicator.h"
 #include "packing/flat_patches.h"
+#include "scene/scene_triangles.h"
 
 #include <algorithm>
 #include <bit>
@@ -26,81 +28,6 @@ static_assert(offsetof(gpu::GpuFrameParams, image) == 80);
 static_assert(offsetof(gpu::GpuFrameParams, dispatch) == 112);
 
 namespace {
-
-// A 64-bit hash of the raw bytes of a trivially copyable value, so that exactly equal
-// values (bit for bit) are merged and nothing else is.
-template <typename T> std::uint64_t dedupHash(const T& value) {
-    static_assert(std::is_trivially_copyable_v<T> && sizeof(T) % 4 == 0);
-    const auto* bytes = reinterpret_cast<const unsigned char*>(&value);
-    std::uint64_t hash = 0x9E3779B97F4A7C15ull;
-    std::size_t i = 0;
-    for (; i + 8 <= sizeof(T); i += 8) {
-        std::uint64_t word;
-        std::memcpy(&word, bytes + i, 8);
-        hash = std::rotl((hash ^ word) * 0xFF51AFD7ED558CCDull, 29);
-    }
-    if (i < sizeof(T)) {
-        std::uint32_t word;
-        std::memcpy(&word, bytes + i, 4);
-        hash = std::rotl((hash ^ word) * 0xFF51AFD7ED558CCDull, 29);
-    }
-    // MurmurHash3's finaliser: every input bit reaches every output bit.
-    hash ^= hash >> 33;
-    hash *= 0xC4CEB9FE1A85EC53ull;
-    return hash ^ (hash >> 33);
-}
-
-// Gives each distinct value an index, in order of first appearance. An open-addressing
-// table (linear probing, at most half full) of 8-byte slots holding the value's index
-// and 32 bits of its hash, so that a probe rarely looks at a value that differs: a
-// million-triangle mesh makes three million look-ups, and std::unordered_map's node per
-// entry made them cost half a second.
-template <typename T> class Deduplicator {
-  public:
-    Deduplicator(std::vector<T>& values, std::size_t expectedDistinct) : values_(values) {
-        slots_.resize(std::bit_ceil(std::max<std::size_t>(2 * expectedDistinct, 16)));
-    }
-
-    std::uint32_t indexOf(const T& value) {
-        const std::uint64_t hash = dedupHash(value);
-        const auto tag = static_cast<std::uint32_t>(hash >> 32);
-        const std::size_t mask = slots_.size() - 1;
-        std::size_t at = hash & mask;
-        for (; slots_[at].indexPlusOne != 0; at = (at + 1) & mask) {
-            const Slot slot = slots_[at];
-            if (slot.tag == tag &&
-                std::memcmp(&values_[slot.indexPlusOne - 1], &value, sizeof(T)) == 0)
-                return slot.indexPlusOne - 1;
-        }
-        const auto index = static_cast<std::uint32_t>(values_.size());
-        values_.push_back(value);
-        slots_[at] = {index + 1, tag};
-        if (2 * values_.size() > slots_.size()) grow();
-        return index;
-    }
-
-  private:
-    struct Slot {
-        std::uint32_t indexPlusOne = 0; // 0: empty
-        std::uint32_t tag = 0;          // the hash's upper half
-    };
-
-    void grow() {
-        std::vector<Slot> slots(2 * slots_.size());
-        const std::size_t mask = slots.size() - 1;
-        for (std::size_t i = 0; i < values_.size(); ++i) {
-            const std::uint64_t hash = dedupHash(values_[i]);
-            std::size_t at = hash & mask;
-            while (slots[at].indexPlusOne != 0)
-                at = (at + 1) & mask;
-            slots[at] = {std::uint32_t(i + 1), static_cast<std::uint32_t>(hash >> 32)};
-        }
-        slots_.swap(slots);
-    }
-
-    std::vector<T>& values_;
-    std::vector<Slot> slots_;
-};
 
 glm::vec4 toVec4(const glm::dvec3& v, double w = 0.0) {
     return glm::vec4(glm::vec3(v), static_cast<float>(w));
@@ -147,32 +74,48 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
         if (fp64) packed.spheres64.push_back(glm::dvec4(sphere.center, sphere.radius));
     }
 
-    // A closed mesh has about half as many vertices as triangles.
+    // The scene file's triangles, then each mesh's (scene_triangles.h's numbering). A closed
+    // mesh has about half as many vertices as triangles.
+    const std::size_t triangles = triangleCount(scene);
     std::vector<PackedVertex> vertices;
-    Deduplicator<PackedVertex> vertexIndices(vertices, scene.triangles.size() / 2);
+    Deduplicator<PackedVertex> vertexIndices(vertices, triangles / 2);
     // The corners by position alone, whatever their normals and materials: what the flat
     // patches join triangles through.
     std::vector<glm::dvec4> corners;
-    Deduplicator<glm::dvec4> cornerIndices(corners, scene.triangles.size() / 2);
+    Deduplicator<glm::dvec4> cornerIndices(corners, triangles / 2);
     std::vector<std::uint32_t> cornersOfTriangles;
-    cornersOfTriangles.reserve(3 * scene.triangles.size());
-    packed.triangles.reserve(scene.triangles.size());
+    cornersOfTriangles.reserve(3 * triangles);
+    packed.triangles.reserve(triangles);
+    auto packCorner = [&](const glm::dvec3& position, const glm::dvec3& normal,
+                          const Material& material) {
+        PackedVertex packedVertex{};
+        packedVertex.position = toVec4(position);
+        packedVertex.normal = toVec4(normal);
+        packedVertex.material = materialIndex(material);
+        if (fp64) packedVertex.exactPosition = glm::dvec4(position, 0.0);
+        // The position the GPU computes with: rounded to float in fp32.
+        const glm::dvec3 corner = fp64 ? position : glm::dvec3(glm::vec3(position));
+        cornersOfTriangles.push_back(cornerIndices.indexOf(glm::dvec4(corner, 0.0)));
+        return vertexIndices.indexOf(packedVertex);
+    };
     for (const Triangle& triangle : scene.triangles) {
         glm::uvec4 packedTriangle(0u);
         for (int k = 0; k < 3; ++k) {
             const Vertex& vertex = triangle.vertices[k];
-            PackedVertex packedVertex{};
-            packedVertex.position = toVec4(vertex.position);
-            packedVertex.normal = toVec4(vertex.normal);
-            packedVertex.material = materialIndex(vertex.material);
-            if (fp64) packedVertex.exactPosition = glm::dvec4(vertex.position, 0.0);
-            packedTriangle[k] = vertexIndices.indexOf(packedVertex);
-            // The position the GPU computes with: rounded to float in fp32.
-            const glm::dvec3 corner =
-                fp64 ? vertex.position : glm::dvec3(glm::vec3(vertex.position));
-            cornersOfTriangles.push_back(cornerIndices.indexOf(glm::dvec4(corner, 0.0)));
+            packedTriangle[k] = packCorner(vertex.position, vertex.normal, vertex.material);
         }
         packed.triangles.push_back(packedTriangle);
+    }
+    for (const Mesh& mesh : scene.meshes) {
+        for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+            glm::uvec4 packedTriangle(0u);
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t v = mesh.triangles[t][k];
+                packedTriangle[k] =
+                    packCorner(mesh.positions[v], mesh.normals[v], cornerMaterial(mesh, t, v));
+            }
+            packed.triangles.push_back(packedTriangle);
+        }
     }
     std::vector<glm::dvec3> cornerPositions(corners.begin(), corners.end());
     const std::vector<std::uint32_t> patches = flatPatches(cornerPositions, cornersOfTriangles);

@@ -4,6 +4,7 @@
 #include "base/scope_guard.h"
 #include "gpu/vk_check.h"
 #include "packing/workgroup_order.h"
+#include "scene/scene_triangles.h"
 #include "shared.h"
 
 #include <algorithm>
@@ -80,9 +81,10 @@ SlotSources slotSources(const Scene& scene, const PackedScene& packed) {
         sources.sphereIndex.push_back(index);
         sources.sphereLine.push_back(scene.spheres[index].line);
     }
+    const std::vector<std::int64_t> lines = triangleLines(scene);
     for (std::uint32_t index : packed.triangleOrder) {
         sources.triangleIndex.push_back(index);
-        sources.triangleLine.push_back(scene.triangles[index].line);
+        sources.triangleLine.push_back(lines[index]);
     }
     for (const Light& light : scene.lights)
         sources.lightLine.push_back(light.line);

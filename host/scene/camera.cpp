@@ -116,6 +116,11 @@ SceneBounds sceneBounds(const Scene& scene) {
             low = glm::min(low, vertex.position);
             high = glm::max(high, vertex.position);
         }
+    for (const Mesh& mesh : scene.meshes) // every vertex is some triangle's corner
+        for (const glm::dvec3& position : mesh.positions) {
+            low = glm::min(low, position);
+            high = glm::max(high, position);
+        }
     if (!(low.x <= high.x)) return {};
     return {(low + high) * 0.5, glm::length(high - low) * 0.5};
 }

@@ -3,6 +3,7 @@
 // the same scene text; docs/models.md states the rules.
 #include "scene/obj_scene.h"
 
+#include "base/deduplicator.h"
 #include "scene/scene_error.h"
 
 #include <algorithm>
@@ -142,10 +143,10 @@ LightRigAnchor anchorOf(const Placement& placement) {
 }
 
 // A floor under the model: a square kGroundSpan model sizes across, centred below it, at
-// the height of its lowest position, matte grey, facing up. Its two triangles come after
-// the model's, so where they touch, the model wins the tie (docs/model.md).
+// the height of its lowest position, matte grey, facing up. A mesh of its own after the
+// model's, so where they touch, the model wins the tie (docs/model.md).
 constexpr double kGroundSpan = 100.0;
-void addGround(Scene& scene, const Placement& placement) {
+Mesh groundMesh(const Placement& placement) {
     const glm::dvec3 centre = (placement.low + placement.high) / 2.0;
     const double half =
         kGroundSpan *
@@ -153,20 +154,26 @@ void addGround(Scene& scene, const Placement& placement) {
                   placement.high.z - placement.low.z}) /
         2.0;
     const double y = placement.low.y;
-    const glm::dvec3 corners[4] = {{centre.x - half, y, centre.z - half},
-                                   {centre.x + half, y, centre.z - half},
-                                   {centre.x + half, y, centre.z + half},
-                                   {centre.x - half, y, centre.z + half}};
-    const Material matte{glm::dvec3(0.7), glm::dvec3(0.0), 1.0};
-    constexpr int kTriangles[2][3] = {{0, 3, 2}, {0, 2, 1}};
-    for (const auto& triangleCorners : kTriangles) {
-        Triangle triangle;
-        for (int k = 0; k < 3; ++k)
-            triangle.vertices[k] =
-                Vertex{corners[triangleCorners[k]], glm::dvec3(0.0, 1.0, 0.0), matte};
-        scene.triangles.push_back(triangle);
-    }
+    Mesh ground;
+    ground.positions = {{centre.x - half, y, centre.z - half},
+                        {centre.x + half, y, centre.z - half},
+                        {centre.x + half, y, centre.z + half},
+                        {centre.x - half, y, centre.z + half}};
+    ground.normals.assign(4, glm::dvec3(0.0, 1.0, 0.0));
+    ground.triangles = {{0, 3, 2}, {0, 2, 1}};
+    ground.triangleMaterials = {0, 0};
+    ground.triangleLines = {0, 0};
+    ground.materials = {MeshMaterial{Material{glm::dvec3(0.7), glm::dvec3(0.0), 1.0}, {}}};
+    return ground;
 }
+
+// A model's corner as a mesh vertex: its position and its normal, bit for bit, so that
+// corners that agree on both share a vertex (and its colour, which goes with the position).
+struct CornerKey {
+    std::uint32_t position = 0;
+    std::uint32_t padding = 0; // zero, so equal keys have equal bytes
+    glm::dvec3 normal{0.0};
+};
 
 } // namespace
 
@@ -222,27 +229,42 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
         scene.lights = {Light{glm::dvec3(0.0, 4.0, 0.0), glm::dvec3(1.0), 0}};
     }
     scene.warnings = model.warnings;
+    Mesh mesh;
+    for (const Material& material : model.materials)
+        mesh.materials.push_back(MeshMaterial{material, {}});
+    const bool anyColor = std::any_of(model.colors.begin(), model.colors.end(),
+                                      [](const auto& color) { return color.has_value(); });
+    std::vector<CornerKey> corners; // one per mesh vertex
+    Deduplicator<CornerKey> vertexOf(corners, model.positions.size());
     std::size_t degenerate = 0;
     for (const ObjTriangle& source : model.triangles) {
         if (isDegenerate(positions, source)) {
             ++degenerate;
             continue;
         }
-        Triangle triangle;
-        triangle.line = source.line;
+        glm::uvec3 triangle;
         for (int k = 0; k < 3; ++k) {
             const ObjCorner& corner = source.corners[k];
-            Vertex& vertex = triangle.vertices[k];
-            vertex.position = place(positions[corner.position]);
-            vertex.normal =
+            CornerKey key;
+            key.position = corner.position;
+            key.normal =
                 corner.normal ? normals[*corner.normal] : smooth.at(source.face, corner.position);
-            vertex.material = model.materials[source.material];
-            if (model.colors[corner.position])
-                vertex.material.diffuse = *model.colors[corner.position];
+            const std::size_t before = corners.size();
+            triangle[k] = vertexOf.indexOf(key);
+            if (corners.size() == before) continue; // a vertex already made
+            mesh.positions.push_back(place(positions[corner.position]));
+            mesh.normals.push_back(key.normal);
+            if (anyColor) {
+                const auto& color = model.colors[corner.position];
+                mesh.colors.push_back(color ? glm::dvec4(*color, 1.0) : glm::dvec4(0.0));
+            }
         }
-        scene.triangles.push_back(triangle);
+        mesh.triangles.push_back(triangle);
+        mesh.triangleMaterials.push_back(source.material);
+        mesh.triangleLines.push_back(source.line);
     }
-    if (setup.ground) addGround(scene, placement);
+    scene.meshes.push_back(std::move(mesh));
+    if (setup.ground) scene.meshes.push_back(groundMesh(placement));
     if (degenerate > 0)
         scene.warnings.push_back(sceneLocation(fileName, 0) +
                                  "warning: " + std::to_string(degenerate) +

@@ -4,18 +4,14 @@
 // numbers in the file; the GPU packer rounds them to float.
 #pragma once
 
+#include "scene/mesh.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
-
-struct Material {
-    glm::dvec3 diffuse{0.0};  // kd, "dif:"
-    glm::dvec3 specular{0.0}; // ks, "spe:"; also the mirror weight of the reflection
-    double shininess = 0.0;   // Phong exponent, "shi:"
-};
 
 // Each object's `line` is where its keyword stands in the file (1-based; 0 when not read
 // from a file), for the pixel story's messages; the GPU never sees it. 64 bits, so the
@@ -55,7 +51,10 @@ struct LightRigAnchor {
 struct Scene {
     glm::dvec3 ambient{0.0};
     std::vector<Sphere> spheres;
-    std::vector<Triangle> triangles;
+    std::vector<Triangle> triangles; // a scene file's, each vertex with its own material
+    // Models' triangles (an OBJ file's, and its floor), after the scene's own in every
+    // numbering of triangles (triangleAt, scene_triangles.h).
+    std::vector<Mesh> meshes;
     std::vector<Light> lights;
     // Set when lights are an OBJ model's rig, which follows the camera (docs/models.md);
     // a scene file's lights stay where the file puts them.

@@ -1,5 +1,7 @@
 #include "scene/scene_summary.h"
 
+#include "scene/scene_triangles.h"
+
 #include <array>
 #include <charconv>
 #include <set>
@@ -39,13 +41,14 @@ std::string sceneSummary(const Scene& scene) {
         materials.insert(keyOf(sphere.material));
         include(sphere.center - sphere.radius, sphere.center + sphere.radius);
     }
-    for (const Triangle& triangle : scene.triangles)
+    forEachTriangle(scene, [&](const Triangle& triangle) {
         for (const Vertex& vertex : triangle.vertices) {
             materials.insert(keyOf(vertex.material));
             include(vertex.position, vertex.position);
         }
+    });
     return "spheres: " + std::to_string(scene.spheres.size()) + "\n" +
-           "triangles: " + std::to_string(scene.triangles.size()) + "\n" +
+           "triangles: " + std::to_string(triangleCount(scene)) + "\n" +
            "lights: " + std::to_string(scene.lights.size()) + "\n" +
            "materials: " + std::to_string(materials.size()) + "\n" + "bounds: " +
            (any ? triple(low) + " to " + triple(high) : "none (no spheres or triangles)") + "\n" +

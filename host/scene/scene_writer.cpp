@@ -1,5 +1,7 @@
 #include "scene/scene_writer.h"
 
+#include "scene/scene_triangles.h"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -35,7 +37,7 @@ void appendMaterial(std::string& out, const Material& material) {
 
 std::string sceneText(const Scene& scene) {
     std::string out;
-    out += std::to_string(scene.lights.size() + scene.spheres.size() + scene.triangles.size());
+    out += std::to_string(scene.lights.size() + scene.spheres.size() + triangleCount(scene));
     out += '\n';
     appendVector(out, "amb:", scene.ambient);
     for (const Light& light : scene.lights) {
@@ -51,14 +53,14 @@ std::string sceneText(const Scene& scene) {
         out += '\n';
         appendMaterial(out, sphere.material);
     }
-    for (const Triangle& triangle : scene.triangles) {
+    forEachTriangle(scene, [&](const Triangle& triangle) {
         out += "triangle\n";
         for (const Vertex& vertex : triangle.vertices) {
             appendVector(out, "pos:", vertex.position);
             appendVector(out, "nor:", vertex.normal);
             appendMaterial(out, vertex.material);
         }
-    }
+    });
     return out;
 }
 

@@ -1,5 +1,7 @@
 #include "peer_scene.h"
 
+#include "scene/scene_triangles.h"
+
 #include <bit>
 #include <functional>
 #include <unordered_map>
@@ -38,15 +40,15 @@ PeerScene makePeerScene(const Scene& scene) {
     for (const Light& l : scene.lights)
         out.lights.push_back({glm::vec3(l.position), glm::vec3(l.color)});
 
-    out.fileTriangles = scene.triangles.size();
+    out.fileTriangles = triangleCount(scene);
     std::unordered_map<PositionKey, std::uint32_t, PositionHash> index;
-    index.reserve(scene.triangles.size() * 2);
-    for (const Triangle& t : scene.triangles) {
+    index.reserve(out.fileTriangles * 2);
+    forEachTriangle(scene, [&](const Triangle& t) {
         const Vertex* v = t.vertices;
         // Zero area decided in double, as the reference does, so both skip the same ones.
         if (glm::cross(v[1].position - v[0].position, v[2].position - v[0].position) ==
             glm::dvec3(0.0))
-            continue;
+            return;
         glm::uvec3 ids;
         for (int k = 0; k < 3; ++k) {
             const glm::vec3 p(v[k].position);
@@ -59,7 +61,7 @@ PeerScene makePeerScene(const Scene& scene) {
             out.corners.push_back({glm::vec3(v[k].normal), toFloat(v[k].material)});
         }
         out.triangles.push_back(ids);
-    }
+    });
     return out;
 }
 

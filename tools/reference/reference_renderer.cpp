@@ -35,6 +35,7 @@
 #include "reference_story.h"
 
 #include "base/parallel.h"
+#include "scene/scene_triangles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,7 +64,7 @@ struct Ray {
 struct RefTriangle {
     dvec3 a, b, c;
     dvec3 normal; // cross(b - a, c - a): the plane, for t, and the fallback normal
-    int id;       // primitive id; scene.triangles[id - sphereCount] holds the rest
+    int id;       // primitive id; triangleAt(scene, id - sphereCount) holds the rest
 };
 
 struct World {
@@ -74,13 +75,14 @@ struct World {
 
 World prepareWorld(const Scene& scene) {
     World world{scene, int(scene.spheres.size()), {}};
-    world.triangles.reserve(scene.triangles.size());
-    for (std::size_t k = 0; k < scene.triangles.size(); ++k) {
-        const Vertex* v = scene.triangles[k].vertices;
-        RefTriangle t{v[0].position, v[1].position, v[2].position, {}, world.sphereCount + int(k)};
+    world.triangles.reserve(triangleCount(scene));
+    int k = 0; // the triangle's number (scene_triangles.h)
+    forEachTriangle(scene, [&](const Triangle& triangle) {
+        const Vertex* v = triangle.vertices;
+        RefTriangle t{v[0].position, v[1].position, v[2].position, {}, world.sphereCount + k++};
         t.normal = glm::cross(t.b - t.a, t.c - t.a);
         if (t.normal != dvec3(0.0)) world.triangles.push_back(t);
-    }
+    });
     return world;
 }
 
@@ -182,7 +184,7 @@ SurfacePoint surfaceAt(const World& world, const Ray& ray, const Hit& hit) {
         p.normal = (p.position - sphere.center) / sphere.radius;
         p.material = sphere.material;
     } else {
-        const Triangle& tri = world.scene.triangles[std::size_t(hit.id - world.sphereCount)];
+        const Triangle tri = triangleAt(world.scene, std::size_t(hit.id - world.sphereCount));
         const Vertex* v = tri.vertices;
         const dvec3 w = hit.weights;
         const dvec3 n = w.x * v[0].normal + w.y * v[1].normal + w.z * v[2].normal;
@@ -207,7 +209,7 @@ StoryPrimitive storyPrimitive(const World& world, int id) {
     if (id == fromEye) return {};
     if (id < world.sphereCount) return {"sphere", id, world.scene.spheres[std::size_t(id)].line};
     const int index = id - world.sphereCount;
-    return {"triangle", index, world.scene.triangles[std::size_t(index)].line};
+    return {"triangle", index, triangleAt(world.scene, std::size_t(index)).line};
 }
 
 // Phong with hard shadows, exactly as docs/model.md's "Shading". With story, each light's

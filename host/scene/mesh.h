@@ -1,0 +1,53 @@
+// A triangle mesh indexed as model files store one (pbrt-v4's TriangleMesh, a glTF
+// primitive): vertices shared by the triangles that meet there, and a material per triangle
+// from the mesh's table. Models of any format become one of these (obj_scene.h for OBJ);
+// the scene format, which states a material per vertex, keeps its per-vertex Triangle
+// (scene.h). Packing reads both (host/packing/scene_packing.h). No Vulkan here.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+struct Material {
+    glm::dvec3 diffuse{0.0};  // kd, "dif:"
+    glm::dvec3 specular{0.0}; // ks, "spe:"; also the mirror weight of the reflection
+    double shininess = 0.0;   // Phong exponent, "shi:"
+};
+
+// One entry of a mesh's material table.
+struct MeshMaterial {
+    Material phong;
+    // The diffuse texture the model names (OBJ's map_Kd), as written; empty: none. Not yet
+    // sampled: the renderer shades with phong.diffuse.
+    std::string diffuseTexture;
+};
+
+struct Mesh {
+    // Every vertex is a corner of some triangle. Per vertex: its position in the scene and its
+    // shading normal (as given or computed for the model; not necessarily of unit length).
+    std::vector<glm::dvec3> positions;
+    std::vector<glm::dvec3> normals;
+    // Per vertex, or empty when the model has none: texture coordinates (u, v).
+    std::vector<glm::dvec2> texcoords;
+    // Per vertex, or empty when no vertex has one: a diffuse colour in rgb that replaces the
+    // triangles' kd at that vertex where a is 1 (OBJ's `v x y z r g b`); a 0 keeps theirs.
+    std::vector<glm::dvec4> colors;
+    // Per triangle: its three vertices, its material (into materials) and the line of the
+    // model file that states it (for the pixel story; 0 when none).
+    std::vector<glm::uvec3> triangles;
+    std::vector<std::uint32_t> triangleMaterials;
+    std::vector<std::int64_t> triangleLines;
+    std::vector<MeshMaterial> materials;
+};
+
+// The material at vertex v of triangle t: the triangle's, with the vertex's colour as kd
+// where it has one.
+inline Material cornerMaterial(const Mesh& mesh, std::size_t t, std::uint32_t v) {
+    Material material = mesh.materials[mesh.triangleMaterials[t]].phong;
+    if (!mesh.colors.empty() && mesh.colors[v].w == 1.0)
+        material.diffuse = glm::dvec3(mesh.colors[v]);
+    return material;
+}
