@@ -59,9 +59,38 @@ Buffer createHostBuffer(const Context& context, VkDeviceSize size, VkBufferUsage
 
 Buffer createDeviceBuffer(const Context& context, const void* data, VkDeviceSize size,
                           VkBufferUsageFlags usage) {
+    return createFilledDeviceBuffer(
+        context, size, usage, [&](void* destination) { std::memcpy(destination, data, size); });
+}
+
+Buffer createFilledDeviceBuffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage,
+                                const std::function<void(void* destination)>& fill,
+                                BufferFill how) {
+    constexpr VkMemoryPropertyFlags kMappable = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT |
+                                                VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
+                                                VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    const VkPhysicalDeviceType type = context.properties.deviceType;
+    if (how == BufferFill::Direct &&
+        (type == VK_PHYSICAL_DEVICE_TYPE_CPU || type == VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU)) {
+        bool mappable = false;
+        for (std::uint32_t i = 0; i < context.memoryProperties.memoryTypeCount; ++i)
+            mappable |=
+                (context.memoryProperties.memoryTypes[i].propertyFlags & kMappable) == kMappable;
+        if (mappable) {
+            // TRANSFER_DST all the same: later updates (updateGpuLights) write with commands.
+            Buffer buffer =
+                createBuffer(context, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, kMappable);
+            OnFailure release([&] { destroyBuffer(context, buffer); });
+            void* mapped = nullptr;
+            VK_CHECK(vkMapMemory(context.device, buffer.memory, 0, VK_WHOLE_SIZE, 0, &mapped));
+            ScopeExit unmap([&] { vkUnmapMemory(context.device, buffer.memory); });
+            fill(mapped);
+            return buffer;
+        }
+    }
     Buffer staging = createHostBuffer(context, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     ScopeExit releaseStaging([&] { destroyBuffer(context, staging); });
-    std::memcpy(staging.mapped, data, size);
+    fill(staging.mapped);
     Buffer buffer = createBuffer(context, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                  VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     OnFailure release([&] { destroyBuffer(context, buffer); });

@@ -29,6 +29,16 @@ Buffer createHostBuffer(const Context& context, VkDeviceSize size, VkBufferUsage
 Buffer createDeviceBuffer(const Context& context, const void* data, VkDeviceSize size,
                           VkBufferUsageFlags usage);
 
+// A device-local buffer whose size bytes fill writes, given where to write them: into the
+// buffer's own memory where the device's memory is the host's (a CPU device or an
+// integrated GPU with a device-local, host-visible type), else (or with ThroughStaging)
+// into a staging buffer that is then copied; so the data exists once more at most, never
+// twice. Waits until done.
+enum class BufferFill { Direct, ThroughStaging };
+Buffer createFilledDeviceBuffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage,
+                                const std::function<void(void* destination)>& fill,
+                                BufferFill how = BufferFill::Direct);
+
 void destroyBuffer(const Context& context, Buffer& buffer);
 
 // A 2D image in device memory with a view covering it.

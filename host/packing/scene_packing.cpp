@@ -178,31 +178,59 @@ void appendBox(std::vector<float>& boxes, glm::dvec3 lo, glm::dvec3 hi) {
 
 } // namespace
 
-GpuTriangleArrays gpuTriangleArrays(const PackedScene& packed) {
+GpuTriangleArrayBytes gpuTriangleArrayBytes(const PackedScene& packed) {
     const bool fp64 = !packed.vertexPositions64.empty();
-    GpuTriangleArrays arrays;
-    if (fp64)
-        arrays.corners64.reserve(3 * packed.triangles.size());
-    else
-        arrays.corners.reserve(3 * packed.triangles.size());
-    arrays.lastVertices.reserve(packed.triangles.size());
+    GpuTriangleArrayBytes bytes;
+    bytes.corners = 3 * packed.triangles.size() * (fp64 ? sizeof(glm::dvec4) : sizeof(glm::vec4));
+    bytes.lastVertices = packed.triangles.size() * sizeof(std::uint32_t);
+    bytes.normalsAndMaterials = packed.vertexPositions.size() * sizeof(glm::vec4);
+    return bytes;
+}
+
+void writeTriangleCorners(const PackedScene& packed, void* destination) {
+    const bool fp64 = !packed.vertexPositions64.empty();
+    auto* corners = static_cast<glm::vec4*>(destination);
+    auto* corners64 = static_cast<glm::dvec4*>(destination);
     for (const glm::uvec4& triangle : packed.triangles) {
         const std::uint32_t words[3] = {triangle.w, triangle.x, triangle.y};
         for (int k = 0; k < 3; ++k) {
             if (fp64)
-                arrays.corners64.push_back(glm::dvec4(
-                    glm::dvec3(packed.vertexPositions64[triangle[k]]), double(words[k])));
+                *corners64++ =
+                    glm::dvec4(glm::dvec3(packed.vertexPositions64[triangle[k]]), double(words[k]));
             else
-                arrays.corners.push_back(glm::vec4(glm::vec3(packed.vertexPositions[triangle[k]]),
-                                                   std::bit_cast<float>(words[k])));
+                *corners++ = glm::vec4(glm::vec3(packed.vertexPositions[triangle[k]]),
+                                       std::bit_cast<float>(words[k]));
         }
-        arrays.lastVertices.push_back(triangle.z);
     }
-    arrays.normalsAndMaterials.reserve(packed.vertexPositions.size());
+}
+
+void writeLastVertices(const PackedScene& packed, void* destination) {
+    auto* last = static_cast<std::uint32_t*>(destination);
+    for (const glm::uvec4& triangle : packed.triangles)
+        *last++ = triangle.z;
+}
+
+void writeNormalsAndMaterials(const PackedScene& packed, void* destination) {
+    auto* out = static_cast<glm::vec4*>(destination);
     for (std::size_t v = 0; v < packed.vertexPositions.size(); ++v)
-        arrays.normalsAndMaterials.push_back(
-            glm::vec4(packed.vertexNormals[3 * v], packed.vertexNormals[3 * v + 1],
-                      packed.vertexNormals[3 * v + 2], packed.vertexPositions[v].w));
+        *out++ = glm::vec4(packed.vertexNormals[3 * v], packed.vertexNormals[3 * v + 1],
+                           packed.vertexNormals[3 * v + 2], packed.vertexPositions[v].w);
+}
+
+GpuTriangleArrays gpuTriangleArrays(const PackedScene& packed) {
+    const bool fp64 = !packed.vertexPositions64.empty();
+    GpuTriangleArrays arrays;
+    if (fp64) {
+        arrays.corners64.resize(3 * packed.triangles.size());
+        writeTriangleCorners(packed, arrays.corners64.data());
+    } else {
+        arrays.corners.resize(3 * packed.triangles.size());
+        writeTriangleCorners(packed, arrays.corners.data());
+    }
+    arrays.lastVertices.resize(packed.triangles.size());
+    writeLastVertices(packed, arrays.lastVertices.data());
+    arrays.normalsAndMaterials.resize(packed.vertexPositions.size());
+    writeNormalsAndMaterials(packed, arrays.normalsAndMaterials.data());
     return arrays;
 }
 

@@ -69,6 +69,18 @@ struct GpuTriangleArrays {
 };
 GpuTriangleArrays gpuTriangleArrays(const PackedScene& packed);
 
+// The same arrays written straight into memory (the device buffer at upload, so that no
+// host copy of them exists): each array's size in bytes, and the write of its bytes.
+struct GpuTriangleArrayBytes {
+    std::size_t corners = 0;             // vec4 (fp32) or dvec4 (fp64) per corner
+    std::size_t lastVertices = 0;        // uint per triangle
+    std::size_t normalsAndMaterials = 0; // vec4 per vertex
+};
+GpuTriangleArrayBytes gpuTriangleArrayBytes(const PackedScene& packed);
+void writeTriangleCorners(const PackedScene& packed, void* destination);
+void writeLastVertices(const PackedScene& packed, void* destination);
+void writeNormalsAndMaterials(const PackedScene& packed, void* destination);
+
 // What the GPU needs: the scene packed in the hierarchy's leaf order, with the hierarchy
 // itself only when it pays (acceleration, useHierarchy). The leaf order is used either
 // way, so both paths see the same primitive order and break ties alike.

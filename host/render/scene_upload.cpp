@@ -5,22 +5,33 @@
 
 #include <algorithm>
 #include <cstring>
+#include <functional>
 #include <iterator>
 #include <stdexcept>
 #include <string>
 
 namespace {
 
+// One array of the scene buffer: its bytes, and how they are written at their place.
 struct ArrayView {
     std::uint32_t binding;
     const char* name;
-    const void* data;
     VkDeviceSize bytes;
+    std::function<void(void* destination)> write;
 };
 
 template <typename T>
 ArrayView view(std::uint32_t binding, const char* name, const std::vector<T>& values) {
-    return {binding, name, values.data(), values.size() * sizeof(T)};
+    return {binding, name, values.size() * sizeof(T), [&values](void* destination) {
+                std::memcpy(destination, values.data(), values.size() * sizeof(T));
+            }};
+}
+
+// A triangle array written from the packed scene where it lands (scene_packing.h).
+ArrayView written(std::uint32_t binding, const char* name, std::size_t bytes,
+                  void (*write)(const PackedScene&, void*), const PackedScene& packed) {
+    return {binding, name, bytes,
+            [write, &packed](void* destination) { write(packed, destination); }};
 }
 
 // A texel-buffer view of one storage binding's range: its format and texel size.
@@ -55,15 +66,19 @@ VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
 GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wantTexelReads) {
     // fp64: the double arrays take the place of the float ones (shaders/precision.glsl).
     const bool fp64 = !packed.spheres64.empty() || !packed.vertexPositions64.empty();
-    const GpuTriangleArrays triangles = gpuTriangleArrays(packed);
+    // The triangle arrays are derived from the packed ones as they are written into the
+    // buffer's memory: no host copy of them is made.
+    const GpuTriangleArrayBytes triangleBytes = gpuTriangleArrayBytes(packed);
     const ArrayView arrays[] = {
         fp64 ? view(BINDING_SPHERES, "spheres", packed.spheres64)
              : view(BINDING_SPHERES, "spheres", packed.spheres),
         view(BINDING_SPHERE_MATERIALS, "sphere materials", packed.sphereMaterials),
-        fp64 ? view(BINDING_TRIANGLE_CORNERS, "triangle corners", triangles.corners64)
-             : view(BINDING_TRIANGLE_CORNERS, "triangle corners", triangles.corners),
-        view(BINDING_TRIANGLE_LAST_VERTICES, "triangles' last vertices", triangles.lastVertices),
-        view(BINDING_VERTEX_NORMALS, "vertex normals", triangles.normalsAndMaterials),
+        written(BINDING_TRIANGLE_CORNERS, "triangle corners", triangleBytes.corners,
+                writeTriangleCorners, packed),
+        written(BINDING_TRIANGLE_LAST_VERTICES, "triangles' last vertices",
+                triangleBytes.lastVertices, writeLastVertices, packed),
+        written(BINDING_VERTEX_NORMALS, "vertex normals", triangleBytes.normalsAndMaterials,
+                writeNormalsAndMaterials, packed),
         view(BINDING_MATERIALS, "materials", packed.materials),
         view(BINDING_LIGHTS, "lights", packed.lights),
         view(BINDING_BVH_NODES, "hierarchy nodes", packed.bvhNodes),
@@ -93,14 +108,17 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
         offsets[array.binding] = array.bytes ? size : 0;
         size = alignUp(size + array.bytes, alignment);
     }
-    std::vector<std::uint8_t> contents(size, 0);
-    for (const ArrayView& array : arrays) {
-        if (array.bytes)
-            std::memcpy(contents.data() + offsets[array.binding], array.data, array.bytes);
-    }
-    scene.buffer = createDeviceBuffer(context, contents.data(), size,
-                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                          VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+    // Straight into the buffer's memory (or its staging copy): zeros between the arrays and
+    // in the shared slot, each array at its offset.
+    scene.buffer = createFilledDeviceBuffer(
+        context, size,
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+        [&](void* destination) {
+            auto* bytes = static_cast<std::uint8_t*>(destination);
+            std::memset(bytes, 0, size);
+            for (const ArrayView& array : arrays)
+                if (array.bytes) array.write(bytes + offsets[array.binding]);
+        });
     for (const ArrayView& array : arrays)
         scene.ranges[array.binding] = {scene.buffer.buffer, offsets[array.binding],
                                        array.bytes ? array.bytes : 16};
