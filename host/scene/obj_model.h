@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 // One corner of a face: indices into ObjModel's positions and normals (0-based).
@@ -18,7 +19,7 @@ struct ObjCorner {
 struct ObjTriangle {
     ObjCorner corners[3];
     std::uint32_t material = 0; // into ObjModel::materials
-    std::uint32_t face = 0;     // into ObjModel::faces: the polygon it was split from
+    std::uint32_t face = 0;     // the face (faceCount, facePositions) it was split from
     std::int64_t line = 0;      // the face's line in the OBJ file
 };
 
@@ -27,13 +28,24 @@ struct ObjModel {
     // `v x y z r g b` (a common extension): the vertex's diffuse colour, clamped to [0, 1].
     std::vector<std::optional<glm::dvec3>> colors;
     std::vector<glm::dvec3> normals; // vn, as given
-    // Each face's position indices, whole: smooth normals are taken per polygon.
-    std::vector<std::vector<std::uint32_t>> faces;
+    // Each face's position indices, whole (smooth normals are taken per polygon): face f's
+    // are facePositions[faceStarts[f]] up to facePositions[faceStarts[f + 1]], in one array
+    // rather than a vector per face (which cost 56 bytes a face before its indices).
+    std::vector<std::uint32_t> facePositions;
+    std::vector<std::size_t> faceStarts{0};
     std::vector<ObjTriangle> triangles;
     // materials[0] is the default one, for faces without a known material.
     std::vector<Material> materials;
     std::vector<std::string> warnings; // "file:line: warning: ..."
 };
+
+inline std::size_t faceCount(const ObjModel& model) {
+    return model.faceStarts.size() - 1;
+}
+inline std::span<const std::uint32_t> facePositions(const ObjModel& model, std::size_t face) {
+    return std::span<const std::uint32_t>(model.facePositions)
+        .subspan(model.faceStarts[face], model.faceStarts[face + 1] - model.faceStarts[face]);
+}
 
 // The material of faces that name none, or one that no material library defines: light grey.
 inline Material defaultObjMaterial() {

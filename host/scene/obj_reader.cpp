@@ -213,17 +213,15 @@ ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlL
             if (count < 3)
                 place.fail("a face needs at least 3 corners, got " + std::to_string(count));
             std::vector<ObjCorner> corners;
-            std::vector<std::uint32_t> face;
-            for (std::size_t i = 1; i <= count; ++i) {
+            for (std::size_t i = 1; i <= count; ++i)
                 corners.push_back(parseCorner(place, statement.words[i], model));
-                face.push_back(corners.back().position);
-            }
-            model.faces.push_back(std::move(face));
+            for (const ObjCorner& corner : corners)
+                model.facePositions.push_back(corner.position);
+            model.faceStarts.push_back(model.facePositions.size());
+            const auto face = static_cast<std::uint32_t>(faceCount(model) - 1);
             for (std::size_t i = 1; i + 1 < corners.size(); ++i) // a fan from the first corner
-                model.triangles.push_back({{corners[0], corners[i], corners[i + 1]},
-                                           material,
-                                           static_cast<std::uint32_t>(model.faces.size() - 1),
-                                           statement.line});
+                model.triangles.push_back(
+                    {{corners[0], corners[i], corners[i + 1]}, material, face, statement.line});
         } else if (keyword == "mtllib") {
             for (std::size_t i = 1; i < statement.words.size(); ++i) {
                 const MtlFile library = lookUpMtl(std::string(statement.words[i]));

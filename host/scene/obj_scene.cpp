@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <span>
 
 namespace {
 
@@ -49,7 +51,7 @@ glm::dvec3 turnUp(glm::dvec3 v, UpAxis up) {
 // adding such sums weights faces by area; per polygon, so how a quad was split does not
 // tilt its corners' normals.
 glm::dvec3 newellNormal(const std::vector<glm::dvec3>& positions,
-                        const std::vector<std::uint32_t>& face) {
+                        std::span<const std::uint32_t> face) {
     glm::dvec3 normal(0.0);
     for (std::size_t i = 1; i + 1 < face.size(); ++i) {
         const glm::dvec3 a = positions[face[0]];
@@ -67,10 +69,11 @@ class SmoothNormals {
                   double creaseDegrees)
         : cosine_(std::cos(creaseDegrees * (kPi / 180.0))), everywhere_(creaseDegrees >= 180.0) {
         facesAround_.resize(positions.size());
-        for (std::size_t f = 0; f < model.faces.size(); ++f) {
-            newell_.push_back(newellNormal(positions, model.faces[f]));
+        for (std::size_t f = 0; f < faceCount(model); ++f) {
+            newell_.push_back(newellNormal(positions, facePositions(model, f)));
             unit_.push_back(normalizedOrZero(newell_.back()));
-            for (const std::uint32_t p : model.faces[f]) // each face once, though p repeats
+            for (const std::uint32_t p :
+                 facePositions(model, f)) // each face once, though p repeats
                 if (facesAround_[p].empty() || facesAround_[p].back() != f)
                     facesAround_[p].push_back(static_cast<std::uint32_t>(f));
         }
@@ -218,7 +221,8 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
     auto place = [&](glm::dvec3 p) {
         return (p - placement.centre) * placement.scale + placement.offset;
     };
-    const SmoothNormals smooth(model, positions, setup.creaseDegrees);
+    // Made when a corner first needs one: a model that gives every normal never pays for it.
+    std::optional<SmoothNormals> smooth;
 
     Scene scene;
     scene.ambient = setup.ambient;
@@ -247,8 +251,9 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
             const ObjCorner& corner = source.corners[k];
             CornerKey key;
             key.position = corner.position;
+            if (!corner.normal && !smooth) smooth.emplace(model, positions, setup.creaseDegrees);
             key.normal =
-                corner.normal ? normals[*corner.normal] : smooth.at(source.face, corner.position);
+                corner.normal ? normals[*corner.normal] : smooth->at(source.face, corner.position);
             const std::size_t before = corners.size();
             triangle[k] = vertexOf.indexOf(key);
             if (corners.size() == before) continue; // a vertex already made
