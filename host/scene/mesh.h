@@ -20,8 +20,8 @@ struct Material {
 // One entry of a mesh's material table.
 struct MeshMaterial {
     Material phong;
-    // The diffuse texture the model names (OBJ's map_Kd), as written; empty: none. Not yet
-    // sampled: the renderer shades with phong.diffuse.
+    // The diffuse texture the model names (OBJ's map_Kd file name, as written, relative to
+    // its MTL file); empty: none. Not sampled yet: the renderer shades with phong.diffuse.
     std::string diffuseTexture;
 };
 

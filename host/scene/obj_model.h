@@ -34,8 +34,9 @@ struct ObjModel {
     std::vector<std::uint32_t> facePositions;
     std::vector<std::size_t> faceStarts{0};
     std::vector<ObjTriangle> triangles;
-    // materials[0] is the default one, for faces without a known material.
-    std::vector<Material> materials;
+    // materials[0] is the default one, for faces without a known material; each with the
+    // diffuse texture its map_Kd names, if any.
+    std::vector<MeshMaterial> materials;
     std::vector<std::string> warnings; // "file:line: warning: ..."
 };
 
@@ -48,8 +49,8 @@ inline std::span<const std::uint32_t> facePositions(const ObjModel& model, std::
 }
 
 // The material of faces that name none, or one that no material library defines: light grey.
-inline Material defaultObjMaterial() {
-    return Material{glm::dvec3(0.75), glm::dvec3(0.1), 30.0};
+inline MeshMaterial defaultObjMaterial() {
+    return MeshMaterial{Material{glm::dvec3(0.75), glm::dvec3(0.1), 30.0}, {}};
 }
 
 // Ns above this is clamped: the Phong exponent of the scene format has no use for more.

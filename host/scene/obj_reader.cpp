@@ -101,6 +101,40 @@ glm::dvec3 clampedColor(const std::vector<double>& values, std::size_t first) {
     return glm::clamp(glm::dvec3(values[first], values[first + 1], values[first + 2]), 0.0, 1.0);
 }
 
+// The file name of a texture statement (map_Kd [options] name): the words after its
+// options, joined by single spaces; empty when the statement names none or holds an option
+// that is not MTL's (nothing is sampled yet, so such a line costs the model nothing). The
+// options are the MTL format's: -blendu, -blendv, -cc, -clamp (on or off), -bm, -texres,
+// -imfchan (one value), -mm (two), -o, -s, -t (one to three numbers).
+std::string textureFileName(const Statement& statement) {
+    const std::vector<std::string_view>& words = statement.words;
+    auto isNumber = [](std::string_view word) {
+        double value = 0;
+        return !word.empty() &&
+               scene_lexer::parseNumber(word, value) == scene_lexer::NumberStatus::ok;
+    };
+    std::size_t i = 1;
+    while (i < words.size() && words[i].size() > 1 && words[i][0] == '-') {
+        const std::string_view option = words[i];
+        std::size_t values = 0, optional = 0;
+        if (option == "-blendu" || option == "-blendv" || option == "-cc" || option == "-clamp" ||
+            option == "-bm" || option == "-texres" || option == "-imfchan")
+            values = 1;
+        else if (option == "-mm")
+            values = 2;
+        else if (option == "-o" || option == "-s" || option == "-t")
+            values = 1, optional = 2;
+        else
+            return {};
+        ++i;
+        if (i + values > words.size()) return {};
+        i += values;
+        for (; optional > 0 && i < words.size() && isNumber(words[i]); --optional)
+            ++i;
+    }
+    return i < words.size() ? joinWords(words, i) : std::string();
+}
+
 // newmtl name -> index into the model's materials, from one MTL file.
 void readMtl(const MtlFile& file, ObjModel& model, std::map<std::string, std::uint32_t>& names) {
     std::optional<std::uint32_t> current;
@@ -124,14 +158,16 @@ void readMtl(const MtlFile& file, ObjModel& model, std::map<std::string, std::ui
             std::vector<double> rgb = numbers(place, statement, 1, name, 2);
             if (rgb.size() == 2) place.fail(name + " expects 1 or 3 numbers, got 2");
             if (rgb.size() == 1) rgb = {rgb[0], rgb[0], rgb[0]};
-            Material& material = model.materials[*current];
+            Material& material = model.materials[*current].phong;
             (keyword == "Kd" ? material.diffuse : material.specular) = clampedColor(rgb, 0);
         } else if (keyword == "Ns") {
             if (!current) place.fail("Ns before any newmtl");
-            model.materials[*current].shininess =
+            model.materials[*current].phong.shininess =
                 std::clamp(numbers(place, statement, 1, "Ns")[0], 0.0, kMaxObjShininess);
+        } else if (keyword == "map_Kd" && current) {
+            model.materials[*current].diffuseTexture = textureFileName(statement);
         }
-        // Ka, Ke, d, Tr, illum, Ni, maps: nothing in this renderer's model uses them.
+        // Ka, Ke, d, Tr, illum, Ni, other maps: nothing in this renderer's model uses them.
     });
     if (!any) model.warnings.push_back(file.path + ": warning: no materials (newmtl) found");
 }

@@ -234,8 +234,7 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
     }
     scene.warnings = model.warnings;
     Mesh mesh;
-    for (const Material& material : model.materials)
-        mesh.materials.push_back(MeshMaterial{material, {}});
+    mesh.materials = model.materials;
     const bool anyColor = std::any_of(model.colors.begin(), model.colors.end(),
                                       [](const auto& color) { return color.has_value(); });
     std::vector<CornerKey> corners; // one per mesh vertex

@@ -110,6 +110,24 @@ TEST(Mesh, TrianglesReadBackPerVertexWithTheirMaterialsAndColours) {
     EXPECT_THROW(triangleAt(cube, triangleCount(cube)), std::out_of_range);
 }
 
+TEST(Mesh, TheMaterialTableHoldsTheDiffuseTextureNamedByTheMtl) {
+    const std::string mtl = "newmtl plain\nKd 0.5 0.5 0.5\n"
+                            "newmtl wood\nmap_Kd -s 2 2 -clamp on -bm 0.5 textures/oak wood.png\n"
+                            "newmtl odd\nmap_Kd -unknown 3 x.png\n"
+                            "newmtl bare\nmap_Kd -o 1\n";
+    const Scene scene = modelScene("mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                   "usemtl wood\nf 1 2 3\n",
+                                   mtl, false);
+    const std::vector<MeshMaterial>& materials = scene.meshes[0].materials;
+    ASSERT_EQ(materials.size(), 5u); // the default, then the library's four
+    EXPECT_EQ(materials[1].diffuseTexture, "");
+    EXPECT_EQ(materials[2].diffuseTexture, "textures/oak wood.png");
+    EXPECT_EQ(materials[3].diffuseTexture, ""); // not an option of MTL's: no name read
+    EXPECT_EQ(materials[4].diffuseTexture, ""); // options and no name
+    EXPECT_EQ(scene.meshes[0].triangleMaterials[0], 2u);
+    EXPECT_EQ(materials[2].phong.diffuse, defaultObjMaterial().phong.diffuse);
+}
+
 TEST(Mesh, PackingAMeshEqualsPackingItsTrianglesPerVertex) {
     Scene cube = modelScene(kCube, kCubeMtl);
     // A scene file's own triangle and sphere beside the meshes: numbered first.
