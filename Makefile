@@ -18,9 +18,11 @@ configure:
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
-# Set-up, build, then show the default scene (a window if there is a display,
-# otherwise a PNG whose path is printed).
-run: deps build
+# Set-up, build the program alone (not the tests and tools, which `make test` builds),
+# then show the default scene (a window if there is a display, otherwise a PNG whose path
+# is printed).
+run: deps configure
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target Raytracer
 	@tools/build/run_default.sh $(BUILD_DIR)/Raytracer $(SCENE)
 
 # Set-up, build, then the whole test suite on lavapipe with validation on; in CI
