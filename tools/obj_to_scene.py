@@ -51,6 +51,7 @@ class ConversionError(Exception):
 
     def __init__(self, path, line, message):
         super().__init__("%s:%d: error: %s" % (path, line, message) if line else "%s: error: %s" % (path, message))
+        self.path, self.line, self.message = path, line, message
 
 
 # ------------------------------------------------------------------ vectors ---
@@ -142,34 +143,52 @@ def numbers(path, line, fields, count, what, optional=0):
 
 
 def read_mtl(path, warn):
-    """{name: material} from an MTL file."""
-    materials, current = {}, None
+    """{name: material} from an MTL file. A line that is wrong is a warning, not an error:
+    the material it belongs to falls back to the default one (its other lines are not read),
+    a line before any material is left out, and the model renders on."""
+    materials, current, current_name, skipping = {}, None, None, False
     for line, text in logical_lines(path):
         fields = text.split("#", 1)[0].split()
         if not fields:
             continue
         keyword, args = fields[0], fields[1:]
-        if keyword == "newmtl":
-            if len(args) < 1:
-                raise ConversionError(path, line, "newmtl needs a name")
-            current = dict(DEFAULT_MATERIAL)
-            materials[" ".join(args)] = current
-        elif keyword in ("Kd", "Ks"):
-            if current is None:
-                raise ConversionError(path, line, "%s before any newmtl" % keyword)
-            if args and args[0] in ("spectral", "xyz"):
-                raise ConversionError(path, line, "%s %s colours are not supported; use r g b" % (keyword, args[0]))
-            rgb = numbers(path, line, args, 1, keyword, optional=2)
-            if len(rgb) == 2:
-                raise ConversionError(path, line, "%s expects 1 or 3 numbers, got 2" % keyword)
-            if len(rgb) == 1:
-                rgb = rgb * 3
-            current["dif" if keyword == "Kd" else "spe"] = tuple(clamp(c, 0.0, 1.0) for c in rgb)
-        elif keyword == "Ns":
-            if current is None:
-                raise ConversionError(path, line, "Ns before any newmtl")
-            current["shi"] = clamp(numbers(path, line, args, 1, "Ns")[0], 0.0, MAX_SHININESS)
-        # Ka, Ke, d, Tr, illum, Ni, maps: nothing in this renderer's model uses them.
+        if keyword != "newmtl" and skipping:
+            continue
+        try:
+            if keyword == "newmtl":
+                current, skipping = None, False
+                if len(args) < 1:
+                    skipping = True  # its lines belong to no material
+                    raise ConversionError(path, line, "newmtl needs a name")
+                current, current_name = dict(DEFAULT_MATERIAL), " ".join(args)
+                materials[current_name] = current
+            elif keyword in ("Kd", "Ks"):
+                if current is None:
+                    raise ConversionError(path, line, "%s before any newmtl" % keyword)
+                if args and args[0] in ("spectral", "xyz"):
+                    raise ConversionError(path, line, "%s %s colours are not supported; use r g b" % (keyword, args[0]))
+                rgb = numbers(path, line, args, 1, keyword, optional=2)
+                if len(rgb) == 2:
+                    raise ConversionError(path, line, "%s expects 1 or 3 numbers, got 2" % keyword)
+                if len(rgb) == 1:
+                    rgb = rgb * 3
+                current["dif" if keyword == "Kd" else "spe"] = tuple(clamp(c, 0.0, 1.0) for c in rgb)
+            elif keyword == "Ns":
+                if current is None:
+                    raise ConversionError(path, line, "Ns before any newmtl")
+                current["shi"] = clamp(numbers(path, line, args, 1, "Ns")[0], 0.0, MAX_SHININESS)
+            # Ka, Ke, d, Tr, illum, Ni, maps: nothing in this renderer's model uses them.
+        except ConversionError as error:
+            consequence = "; the line is left out"
+            if current is not None:
+                current.clear()
+                current.update(DEFAULT_MATERIAL)
+                skipping = True
+                consequence = "; material '%s' is the default one" % current_name
+            elif skipping:
+                consequence = "; the lines up to the next newmtl are left out"
+            place = "%s:%d: " % (error.path, error.line) if error.line else "%s: " % error.path
+            warn(place + "warning: " + error.message + consequence)
     if not materials:
         warn("%s: warning: no materials (newmtl) found" % path)
     return materials
@@ -211,13 +230,52 @@ def parse_corner(path, line, token, model):
     return position, normal
 
 
+def other_file_format(path):
+    """What the file is when it is not OBJ text, told from its first bytes as Raytracer
+    tells it (host/scene/file_format.cpp): another model format, or UTF-16 text; or None."""
+    try:
+        with open(path, "rb") as handle:
+            data = handle.read()
+    except OSError:
+        return None  # logical_lines reports it
+    if data[:2] in (b"\xff\xfe", b"\xfe\xff"):
+        return "UTF-16 text"
+    if len(data) >= 4:
+        pairs = [(data[2 * i], data[2 * i + 1]) for i in range(min(len(data) // 2, 32))]
+        if all(a != 0 and a < 0x80 and b == 0 for a, b in pairs) or \
+                all(a == 0 and b != 0 and b < 0x80 for a, b in pairs):
+            return "UTF-16 text"
+    if data.startswith(b"ply\n") or data.startswith(b"ply\r\n"):
+        return "a PLY model"
+    if data.startswith(b"glTF"):
+        return "a binary glTF model (.glb)"
+    if len(data) >= 84 and 84 + 50 * int.from_bytes(data[80:84], "little") == len(data):
+        return "an STL model"
+    head = data[:1024]
+    if data.startswith(b"solid") and b"facet" in head:
+        return "an STL model"
+    if head.lstrip(b" \t\r\n").startswith(b"{") and b'"asset"' in head:
+        return "a glTF model"
+    return None
+
+
 def read_obj(path, warn):
+    other = other_file_format(path)
+    if other == "UTF-16 text":
+        raise ConversionError(path, 0, "the file is UTF-16 text, and an OBJ model is read as UTF-8; "
+                              "convert it first: iconv -f UTF-16 -t UTF-8 '%s' > converted.obj" % path)
+    if other:
+        raise ConversionError(path, 0, "not an OBJ model: this is %s, which is not read; convert it "
+                              "to OBJ first (for example with assimp export, Debian's assimp-utils)" % other)
     reason = binary_reason(path)
     if reason:
         raise ConversionError(path, 0, "not an OBJ file: it is binary (%s)" % reason)
     model = Model()
     materials, material = {}, DEFAULT_MATERIAL
     ignored = set()
+    # Libraries not found, and the faces whose material was to come from one: one warning at
+    # the end says both, in place of one for each usemtl.
+    missing, missing_line, fell_back, faces_fell_back = [], 0, False, 0
     for line, text in logical_lines(path):
         fields = text.split("#", 1)[0].split()
         if not fields:
@@ -235,6 +293,7 @@ def read_obj(path, warn):
                 raise ConversionError(path, line, "a face needs at least 3 corners, got %d" % len(args))
             corners = [parse_corner(path, line, token, model) for token in args]
             model.faces.append([p for p, _n in corners])
+            faces_fell_back += 1 if fell_back else 0
             for i in range(1, len(corners) - 1):  # a fan from the first corner
                 model.triangles.append(((corners[0], corners[i], corners[i + 1]), material, line,
                                         len(model.faces) - 1))
@@ -244,12 +303,16 @@ def read_obj(path, warn):
                 if os.path.exists(mtl):
                     materials.update(read_mtl(mtl, warn))
                 else:
-                    warn("%s:%d: warning: material library %s not found; default material used" % (path, line, mtl))
+                    if not missing:
+                        missing_line = line
+                    missing.append(mtl)
         elif keyword == "usemtl":
             name = " ".join(args)
             material = materials.get(name)
-            if material is None:
+            fell_back = material is None and bool(missing)
+            if material is None and not missing:
                 warn("%s:%d: warning: unknown material '%s'; default material used" % (path, line, name))
+            if material is None:
                 material = DEFAULT_MATERIAL
         elif keyword in ("vt", "vp", "o", "g", "s"):
             pass  # texture coordinates, object and group names, smoothing groups
@@ -258,6 +321,11 @@ def read_obj(path, warn):
             warn("%s:%d: warning: '%s' statements are ignored" % (path, line, keyword))
     if not model.triangles:
         raise ConversionError(path, 0, "no faces (f) found")
+    if missing:
+        libraries = missing[0] if len(missing) == 1 else ", ".join(missing[:-1]) + " and " + missing[-1]
+        warn("%s:%d: warning: material %s %s not found; %d of %d faces use the default material"
+             % (path, missing_line, "library" if len(missing) == 1 else "libraries", libraries,
+                faces_fell_back, len(model.faces)))
     return model
 
 

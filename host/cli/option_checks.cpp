@@ -2,12 +2,29 @@
 
 #include "base/output_format.h"
 #include "cli/output_pattern.h"
+#include "scene/obj_reader.h"
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
 namespace {
+
+// Options that shape an OBJ model (docs/models.md) given with scene files alone: they would
+// change nothing, so the command line is not what its writer meant.
+void checkModelOptions(const Options& options, const std::vector<std::string>& modelOnly) {
+    if (modelOnly.empty() || options.scenePath.empty()) return;
+    if (isObjPath(options.scenePath)) return;
+    for (const std::filesystem::path& scene : options.moreScenes)
+        if (isObjPath(scene)) return;
+    std::string flags;
+    for (std::size_t i = 0; i < modelOnly.size(); ++i)
+        flags += (i == 0 ? "" : i + 1 == modelOnly.size() ? " and " : ", ") + modelOnly[i];
+    throw UsageError(flags + " shape" + (modelOnly.size() == 1 ? "s" : "") + " an OBJ model, and " +
+                     options.scenePath.string() +
+                     " is a scene file, whose own triangles, lights and camera are used as "
+                     "they are");
+}
 
 // The checks of a batch (several scenes, --turntable, --camera-path) and of -o as a
 // pattern or a folder, once every option is known; a folder becomes its pattern.
@@ -40,6 +57,19 @@ void checkBatch(Options& options) {
     if (isStandardOutput(options.outputPath))
         throw UsageError("-o - writes one PNG to stdout; several scenes, --turntable and "
                          "--camera-path write files: give -o a pattern or a folder");
+    if (!options.moreScenes.empty() && pattern.empty()) {
+        // Raytracer scene.scene out.png: an output meant, written without -o.
+        for (const std::filesystem::path& scene : options.moreScenes) {
+            std::error_code error;
+            if (std::filesystem::exists(scene, error)) continue;
+            throw UsageError("'" + scene.string() +
+                             "' is no file: each argument without an option is a scene to "
+                             "render" +
+                             (outputFormatOf(scene)
+                                  ? "; to write the image there, give -o " + scene.string()
+                                  : std::string()));
+        }
+    }
     if (!options.moreScenes.empty() && (pattern.empty() || !outputPatternHas(pattern, "name")))
         throw UsageError(
             "several scenes would all write " + (pattern.empty() ? "no file" : pattern) +
@@ -79,7 +109,7 @@ void checkBatch(Options& options) {
 
 } // namespace
 
-void checkOptionCombinations(Options& options, bool jpegQualityGiven) {
+void checkOptionCombinations(Options& options, const OptionsGiven& given) {
     // A target given without a position looks from the origin; a position alone keeps
     // looking down -z from there.
     if (!options.cameraTargetGiven)
@@ -89,6 +119,7 @@ void checkOptionCombinations(Options& options, bool jpegQualityGiven) {
     if (options.scenePath.empty() && !options.showHelp && !options.showVersion &&
         !options.listDevices && options.dumpShadersTo.empty())
         throw UsageError("no scene file given");
+    checkModelOptions(options, given.modelOnly);
     if (options.forceWindow && (!options.outputPath.empty() || options.benchFrames > 0))
         throw UsageError("--window cannot be combined with -o or --bench, which render headless");
     if (options.pixelGiven &&
@@ -111,7 +142,7 @@ void checkOptionCombinations(Options& options, bool jpegQualityGiven) {
     if (options.benchWindowFrames > 0 && (!options.outputPath.empty() || options.benchFrames > 0))
         throw UsageError(
             "--bench-window cannot be combined with -o or --bench, which render headless");
-    if (jpegQualityGiven && outputFormatOf(options.outputPath) != OutputFormat::Jpeg)
+    if (given.jpegQuality && outputFormatOf(options.outputPath) != OutputFormat::Jpeg)
         throw UsageError("--quality sets a JPEG's quality and needs -o FILE.jpg or FILE.jpeg" +
                          (options.outputPath.empty() ? std::string()
                                                      : ", got -o " + options.outputPath.string()));

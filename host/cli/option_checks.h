@@ -5,5 +5,13 @@
 
 #include "cli/options.h"
 
-// jpegQualityGiven: --quality was given (any value names a JPEG output).
-void checkOptionCombinations(Options& options, bool jpegQualityGiven);
+#include <string>
+#include <vector>
+
+// What the command line said beyond the values in Options.
+struct OptionsGiven {
+    bool jpegQuality = false;           // --quality (any value names a JPEG output)
+    std::vector<std::string> modelOnly; // --up, --crease, --no-ground, in the order given
+};
+
+void checkOptionCombinations(Options& options, const OptionsGiven& given);

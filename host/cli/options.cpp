@@ -9,6 +9,7 @@
 
 #include "shared.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <functional>
@@ -16,6 +17,11 @@
 #include <vector>
 
 namespace {
+
+void noteModelOnly(OptionsGiven& given, const std::string& flag) {
+    if (std::find(given.modelOnly.begin(), given.modelOnly.end(), flag) == given.modelOnly.end())
+        given.modelOnly.push_back(flag);
+}
 
 // Parses one of the kernel's method and precision flags into kernel; false if arg is none.
 bool parseKernelOption(const std::string& arg, const std::function<const std::string&()>& value,
@@ -155,7 +161,7 @@ std::string usageText() {
 
 Options parseOptions(int argc, const char* const* argv) {
     Options options;
-    bool qualityGiven = false; // --quality 90 names a JPEG output as much as --quality 50 does
+    OptionsGiven given; // what only the flags given, not their values, tell
     std::vector<std::string> args(argv + 1, argv + argc);
     for (std::size_t i = 0; i < args.size(); ++i) {
         // --opt=value is --opt value: arg is then the name, and value() returns the rest
@@ -187,19 +193,22 @@ Options parseOptions(int argc, const char* const* argv) {
                                  ": the output must be a file name ending in " + kOutputNames);
         } else if (arg == "--quality") {
             options.jpegQuality = parseCount(arg, value(), 1, 100);
-            qualityGiven = true;
+            given.jpegQuality = true;
         } else if (arg == "--save-scene") {
             options.saveScenePath = value();
             if (options.saveScenePath.empty()) throw UsageError(arg + " expects a file name");
         } else if (arg == "--up") {
             options.modelUp = parseChoice(arg, value(), upAxisNames());
+            noteModelOnly(given, arg);
         } else if (arg == "--crease") {
+            noteModelOnly(given, arg);
             const std::string& degrees = value();
             options.creaseDegrees = parseReal(arg, degrees);
             if (!(options.creaseDegrees >= 0.0 && options.creaseDegrees <= 180.0))
                 throw UsageError("--crease expects degrees from 0 to 180, got '" + degrees + "'");
         } else if (arg == "--no-ground") {
             options.ground = false;
+            noteModelOnly(given, arg);
         } else if (arg == "--width") {
             options.width = parseCount(arg, value(), 1, 16384);
         } else if (arg == "--height") {
@@ -291,7 +300,7 @@ Options parseOptions(int argc, const char* const* argv) {
         if (hasInlineValue && !inlineValueUsed)
             throw UsageError(arg + " takes no value, got '" + args[i] + "'");
     }
-    checkOptionCombinations(options, qualityGiven);
+    checkOptionCombinations(options, given);
     return options;
 }
 

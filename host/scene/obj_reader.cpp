@@ -3,6 +3,7 @@
 // can be held to each other (tests/tools/obj_to_scene_test.py).
 #include "scene/obj_reader.h"
 
+#include "scene/file_format.h"
 #include "scene/mapped_file.h"
 #include "scene/scene_error.h"
 #include "scene/scene_lexer.h"
@@ -135,39 +136,64 @@ std::string textureFileName(const Statement& statement) {
     return i < words.size() ? joinWords(words, i) : std::string();
 }
 
-// newmtl name -> index into the model's materials, from one MTL file.
+// newmtl name -> index into the model's materials, from one MTL file. A line that is wrong
+// is a warning, not an error: the material it belongs to falls back to the default one
+// (its other lines are not read), a line before any material is left out, and the model
+// renders on.
 void readMtl(const MtlFile& file, ObjModel& model, std::map<std::string, std::uint32_t>& names) {
     std::optional<std::uint32_t> current;
+    std::string currentName;
+    bool skipping = false; // the current material's lines are not read (one was wrong)
     bool any = false;
     forEachStatement(*file.text, [&](const Statement& statement) {
         const Place place{file.path, statement.line};
         const std::string_view keyword = statement.words[0];
-        if (keyword == "newmtl") {
-            if (statement.words.size() < 2) place.fail("newmtl needs a name");
-            current = static_cast<std::uint32_t>(model.materials.size());
-            model.materials.push_back(defaultObjMaterial());
-            names[joinWords(statement.words, 1)] = *current;
-            any = true;
-        } else if (keyword == "Kd" || keyword == "Ks") {
-            const std::string name(keyword);
-            if (!current) place.fail(name + " before any newmtl");
-            if (statement.words.size() > 1 &&
-                (statement.words[1] == "spectral" || statement.words[1] == "xyz"))
-                place.fail(name + " " + std::string(statement.words[1]) +
-                           " colours are not supported; use r g b");
-            std::vector<double> rgb = numbers(place, statement, 1, name, 2);
-            if (rgb.size() == 2) place.fail(name + " expects 1 or 3 numbers, got 2");
-            if (rgb.size() == 1) rgb = {rgb[0], rgb[0], rgb[0]};
-            Material& material = model.materials[*current].phong;
-            (keyword == "Kd" ? material.diffuse : material.specular) = clampedColor(rgb, 0);
-        } else if (keyword == "Ns") {
-            if (!current) place.fail("Ns before any newmtl");
-            model.materials[*current].phong.shininess =
-                std::clamp(numbers(place, statement, 1, "Ns")[0], 0.0, kMaxObjShininess);
-        } else if (keyword == "map_Kd" && current) {
-            model.materials[*current].diffuseTexture = textureFileName(statement);
+        if (keyword != "newmtl" && skipping) return;
+        try {
+            if (keyword == "newmtl") {
+                current.reset();
+                skipping = false;
+                if (statement.words.size() < 2) {
+                    skipping = true; // its lines belong to no material
+                    place.fail("newmtl needs a name");
+                }
+                current = static_cast<std::uint32_t>(model.materials.size());
+                currentName = joinWords(statement.words, 1);
+                model.materials.push_back(defaultObjMaterial());
+                names[currentName] = *current;
+                any = true;
+            } else if (keyword == "Kd" || keyword == "Ks") {
+                const std::string name(keyword);
+                if (!current) place.fail(name + " before any newmtl");
+                if (statement.words.size() > 1 &&
+                    (statement.words[1] == "spectral" || statement.words[1] == "xyz"))
+                    place.fail(name + " " + std::string(statement.words[1]) +
+                               " colours are not supported; use r g b");
+                std::vector<double> rgb = numbers(place, statement, 1, name, 2);
+                if (rgb.size() == 2) place.fail(name + " expects 1 or 3 numbers, got 2");
+                if (rgb.size() == 1) rgb = {rgb[0], rgb[0], rgb[0]};
+                Material& material = model.materials[*current].phong;
+                (keyword == "Kd" ? material.diffuse : material.specular) = clampedColor(rgb, 0);
+            } else if (keyword == "Ns") {
+                if (!current) place.fail("Ns before any newmtl");
+                model.materials[*current].phong.shininess =
+                    std::clamp(numbers(place, statement, 1, "Ns")[0], 0.0, kMaxObjShininess);
+            } else if (keyword == "map_Kd" && current) {
+                model.materials[*current].diffuseTexture = textureFileName(statement);
+            }
+            // Ka, Ke, d, Tr, illum, Ni, other maps: nothing in this renderer's model uses them.
+        } catch (const SceneError& error) {
+            std::string consequence = "; the line is left out";
+            if (current) {
+                model.materials[*current] = defaultObjMaterial();
+                skipping = true;
+                consequence = "; material '" + currentName + "' is the default one";
+            } else if (skipping) {
+                consequence = "; the lines up to the next newmtl are left out";
+            }
+            model.warnings.push_back(sceneLocation(error.file, error.line) +
+                                     "warning: " + error.message + consequence);
         }
-        // Ka, Ke, d, Tr, illum, Ni, other maps: nothing in this renderer's model uses them.
     });
     if (!any) model.warnings.push_back(file.path + ": warning: no materials (newmtl) found");
 }
@@ -223,6 +249,8 @@ std::string directoryOf(const std::string& path) {
 } // namespace
 
 ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlLookup& lookUpMtl) {
+    if (const auto format = otherFileFormat(text))
+        throw SceneError(fileName, 0, otherFormatMessage(*format, fileName, "an OBJ model"));
     if (const auto reason = scene_lexer::binaryReason(text))
         throw SceneError(fileName, 0, "not an OBJ file: it is binary (" + *reason + ")");
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3); // UTF-8 byte-order mark
@@ -231,6 +259,12 @@ ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlL
     std::map<std::string, std::uint32_t> names;
     std::uint32_t material = 0;
     std::set<std::string, std::less<>> ignored;
+    // Libraries not found, and the faces whose material was to come from one: one warning
+    // at the end says both, in place of one for each usemtl.
+    std::vector<std::string> missingLibraries;
+    int missingLine = 0;
+    bool fellBack = false; // the current usemtl names a material no library defines
+    std::size_t facesFellBack = 0;
     forEachStatement(text, [&](const Statement& statement) {
         const Place place{fileName, statement.line};
         const std::string_view keyword = statement.words[0];
@@ -255,23 +289,26 @@ ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlL
                 model.facePositions.push_back(corner.position);
             model.faceStarts.push_back(model.facePositions.size());
             const auto face = static_cast<std::uint32_t>(faceCount(model) - 1);
+            facesFellBack += fellBack ? 1 : 0;
             for (std::size_t i = 1; i + 1 < corners.size(); ++i) // a fan from the first corner
                 model.triangles.push_back(
                     {{corners[0], corners[i], corners[i + 1]}, material, face, statement.line});
         } else if (keyword == "mtllib") {
             for (std::size_t i = 1; i < statement.words.size(); ++i) {
                 const MtlFile library = lookUpMtl(std::string(statement.words[i]));
-                if (library.text)
+                if (library.text) {
                     readMtl(library, model, names);
-                else
-                    model.warnings.push_back(at + "warning: material library " + library.path +
-                                             " not found; default material used");
+                } else {
+                    if (missingLibraries.empty()) missingLine = statement.line;
+                    missingLibraries.push_back(library.path);
+                }
             }
         } else if (keyword == "usemtl") {
             const std::string name = joinWords(statement.words, 1);
             const auto found = names.find(name);
             material = found == names.end() ? 0 : found->second;
-            if (found == names.end())
+            fellBack = found == names.end() && !missingLibraries.empty();
+            if (found == names.end() && missingLibraries.empty())
                 model.warnings.push_back(at + "warning: unknown material '" + name +
                                          "'; default material used");
         } else if (keyword == "vt" || keyword == "vp" || keyword == "o" || keyword == "g" ||
@@ -283,6 +320,19 @@ ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlL
         }
     });
     if (model.triangles.empty()) throw SceneError(fileName, 0, "no faces (f) found");
+    if (!missingLibraries.empty()) {
+        std::string libraries;
+        for (std::size_t i = 0; i < missingLibraries.size(); ++i)
+            libraries += (i == 0                             ? ""
+                          : i + 1 == missingLibraries.size() ? " and "
+                                                             : ", ") +
+                         missingLibraries[i];
+        model.warnings.push_back(sceneLocation(fileName, missingLine) + "warning: material " +
+                                 (missingLibraries.size() == 1 ? "library " : "libraries ") +
+                                 libraries + " not found; " + std::to_string(facesFellBack) +
+                                 " of " + std::to_string(faceCount(model)) +
+                                 " faces use the default material");
+    }
     return model;
 }
 

@@ -10,6 +10,7 @@
 #include "scene/scene_loader.h"
 
 #include "base/parallel.h"
+#include "scene/file_format.h"
 #include "scene/mapped_file.h"
 #include "scene/obj_reader.h"
 #include "scene/obj_scene.h"
@@ -99,33 +100,37 @@ Scene parseText(std::string_view text, const std::string& fileName,
         ahead.back().stopAt = k + 1 < starts.size() ? starts[k + 1] : kNowhere;
         ahead.back().sizeUntil = k + 1 < starts.size() ? starts[k + 1] : text.size();
     }
-    // Reader 0 is the first, from the header on; reader k > 0 reads ahead[k - 1]. When the
-    // first finds the file's end before its chunk's, or throws, the others are told to stop.
+    // Reader 0 is the first, from the header on; reader k > 0 reads ahead[k - 1], each on a
+    // thread of its own (the chunks are as many as the thread policy allows, chunkStarts).
+    // When the first finds the file's end before its chunk's, or throws, the others stop.
     std::vector<char> complete(ahead.size(), 0);
     std::stop_source cancel;
     bool endedEarly = false;
     first.stopAt = starts.size() > 1 ? starts[1] : kNowhere;
-    parallelFor(starts.size(), [&](std::size_t reader) {
-        if (reader > 0) {
+    parallelFor(
+        starts.size(),
+        [&](std::size_t reader) {
+            if (reader > 0) {
+                try {
+                    complete[reader - 1] = ahead[reader - 1].readChunk(cancel.get_token());
+                } catch (...) {
+                    // Read again in order below, which says what is wrong.
+                }
+                return;
+            }
             try {
-                complete[reader - 1] = ahead[reader - 1].readChunk(cancel.get_token());
+                first.readHeader();
+                if (!first.readObjects()) {
+                    endedEarly = true;
+                    cancel.request_stop();
+                    first.expectEnd();
+                }
             } catch (...) {
-                // Read again in order below, which says what is wrong.
-            }
-            return;
-        }
-        try {
-            first.readHeader();
-            if (!first.readObjects()) {
-                endedEarly = true;
                 cancel.request_stop();
-                first.expectEnd();
+                throw;
             }
-        } catch (...) {
-            cancel.request_stop();
-            throw;
-        }
-    });
+        },
+        unsigned(starts.size()));
     if (endedEarly) return joinScenes({{&first, 1}});
 
     // Confirm the chunks in order while the counts add up.
@@ -162,6 +167,8 @@ Scene parseText(std::string_view text, const std::string& fileName,
 Scene parseScene(std::string_view text, const std::string& fileName,
                  const SceneParseOptions& options) {
     if (text.empty()) throw SceneError(fileName, 0, "the file is empty");
+    if (const auto format = otherFileFormat(text))
+        throw SceneError(fileName, 0, otherFormatMessage(*format, fileName, "a scene file"));
     if (const auto reason = scene_lexer::binaryReason(text))
         throw SceneError(fileName, 0, "the file is binary (" + *reason + ")");
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3); // UTF-8 byte-order mark

@@ -247,7 +247,7 @@ TEST(Batch, PatternAndRegionUsageErrorsWordForWord) {
         {{scene, "b.scene", "-o", "x.png"},
          "several scenes would all write x.png: give -o a pattern with {name}, the scene file's "
          "stem (out/{name}.png), or a folder (out/)"},
-        {{scene, "b.scene"},
+        {{scene, scene}, // (a second scene that is no file says so: cli_test)
          "several scenes would all write no file: give -o a pattern with {name}, the scene "
          "file's stem (out/{name}.png), or a folder (out/)"},
         {{scene, "--turntable", "8", "-o", "x.png"},

@@ -80,8 +80,7 @@ TEST(CommandLine, BadOptionValuesAreUsageErrors) {
         {{"x.scene", "--width"}, "--width expects a value"},
         {{"x.scene", "--frobnicate"}, "unknown option '--frobnicate'"},
         {{"a.scene", "b.scene"},
-         "several scenes would all write no file: give -o a pattern with {name}, the scene "
-         "file's stem (out/{name}.png), or a folder (out/)"},
+         "'b.scene' is no file: each argument without an option is a scene to render"},
         {{"x.scene", "--sampler", "halton"},
          "--sampler expects grid, stratified or r2, got 'halton'"},
         {{"x.scene", "--seed", "-1"},
@@ -121,6 +120,36 @@ TEST(CommandLine, UsageErrorIsTheErrorAndOneLineToTheHelp) {
         EXPECT_EQ(run.exitCode, 2) << run.err;
         EXPECT_EQ(run.err, message + seeHelp);
         EXPECT_EQ(run.out, "");
+    }
+}
+
+// Command lines that would do something other than their writer meant: a model's options on a
+// scene file, and an output written without -o (which reads as a second scene).
+TEST(CommandLine, MeaninglessCombinationsSayWhatWasMeant) {
+    const std::filesystem::path dir = freshOutputDir("cli/meant");
+    const std::string scene = writeScene(dir, minimalScene()).string();
+    const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+        {{scene, "--up", "z", "-o", "a.png"},
+         "error: --up shapes an OBJ model, and " + scene +
+             " is a scene file, whose own triangles, lights and camera are used as they are\n"},
+        {{scene, "--no-ground", "--crease", "0", "--no-ground"},
+         "error: --no-ground and --crease shape an OBJ model, and " + scene +
+             " is a scene file, whose own triangles, lights and camera are used as they are\n"},
+        {{scene, "out.png"},
+         "error: 'out.png' is no file: each argument without an option is a "
+         "scene to render; to write the image there, give -o out.png\n"},
+        {{scene, "other.scene"},
+         "error: 'other.scene' is no file: each argument without an "
+         "option is a scene to render\n"},
+        {{scene, scene},
+         "error: several scenes would all write no file: give -o a pattern with "
+         "{name}, the scene file's stem (out/{name}.png), or a folder (out/)\n"},
+    };
+    for (const auto& [args, message] : cases) {
+        ProcessResult run = runRaytracer(args, 60, dir);
+        EXPECT_EQ(run.exitCode, 2) << run.err;
+        EXPECT_EQ(run.err, message + "Run 'Raytracer --help' for the list of options.\n");
+        EXPECT_FALSE(std::filesystem::exists(dir / "a.png"));
     }
 }
 

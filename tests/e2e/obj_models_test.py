@@ -107,12 +107,18 @@ MALFORMED = {
     "v 0 0 0\nv \xff\n": ": error: not an OBJ file: it is binary (invalid UTF-8 at offset 10)",
 }
 
+# A wrong line of a material library is a warning: its material falls back to the default
+# one, and the model renders on.
 BAD_MTL = {
-    "Kd 1 1 1\n": "mats.mtl:1: error: Kd before any newmtl",
-    "newmtl\n": "mats.mtl:1: error: newmtl needs a name",
-    "newmtl a\nKs 1 1\n": "mats.mtl:2: error: Ks expects 1 or 3 numbers, got 2",
-    "newmtl a\nKd spectral x.spd\n": "mats.mtl:2: error: Kd spectral colours are not supported; use r g b",
-    "newmtl a\nNs\n": "mats.mtl:2: error: Ns expects 1 numbers, got 0",
+    "Kd 1 1 1\nnewmtl a\n": "mats.mtl:1: warning: Kd before any newmtl; the line is left out",
+    "newmtl\nKd 1 1 1\n": "mats.mtl:1: warning: newmtl needs a name; the lines up to the next "
+                          "newmtl are left out",
+    "newmtl a\nKs 1 1\nKd 1 0 0\n": "mats.mtl:2: warning: Ks expects 1 or 3 numbers, got 2; "
+                                    "material 'a' is the default one",
+    "newmtl a\nKd spectral x.spd\n": "mats.mtl:2: warning: Kd spectral colours are not supported; "
+                                     "use r g b; material 'a' is the default one",
+    "newmtl a\nNs\n": "mats.mtl:2: warning: Ns expects 1 numbers, got 0; material 'a' is the "
+                      "default one",
 }
 
 
@@ -122,7 +128,7 @@ def write_model(name, obj, mtl=None, binary=False):
     os.makedirs(folder)
     path = os.path.join(folder, name + ".obj")
     with open(path, "wb") as handle:
-        handle.write(obj.encode("latin-1") if binary else obj.encode("utf-8"))
+        handle.write(obj if isinstance(obj, bytes) else obj.encode("latin-1") if binary else obj.encode("utf-8"))
     if mtl is not None:
         with open(os.path.join(folder, "mats.mtl"), "w") as handle:
             handle.write(mtl)
@@ -176,15 +182,39 @@ class NativeModels(unittest.TestCase):
                 self.assertEqual(tool.returncode, 1)
                 self.assertEqual(tool.stderr.decode(errors="replace"), path + message + "\n")
 
-    def test_malformed_material_libraries_name_their_own_file_and_line(self):
+    def test_malformed_material_libraries_are_warnings_naming_their_own_file_and_line(self):
         for number, (mtl, message) in enumerate(BAD_MTL.items()):
             with self.subTest(mtl=mtl):
-                path = write_model("badmtl%d" % number, "mtllib mats.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", mtl)
-                expected = os.path.join(os.path.dirname(path), message) + "\n"
+                path = write_model("badmtl%d" % number,
+                                   "mtllib mats.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n", mtl)
+                expected = os.path.join(os.path.dirname(path), message)
+                native, converted = path[:-4] + ".native.scene", path[:-4] + ".tool.scene"
+                ours = run(RAYTRACER, path, "--save-scene", native)
+                self.assertEqual(ours.returncode, 0, ours.stderr)
+                self.assertIn(expected, warnings(ours.stderr))
+                tool = run(sys.executable, TOOL, path, "-o", converted, "--fit", "--ground", "--rig")
+                self.assertEqual(tool.returncode, 0, tool.stderr)
+                self.assertEqual(warnings(ours.stderr), warnings(tool.stderr))
+                self.assertEqual(read(native), read(converted))
+                # The material that fell back is the default one: light grey.
+                self.assertIn("dif: 0.75 0.75 0.75", read(native).decode())
+
+    def test_other_formats_behind_an_obj_name_are_named(self):
+        cases = {
+            b"ply\nformat ascii 1.0\nelement vertex 3\n": "not an OBJ model: this is a PLY model, which "
+            "is not read; convert it to OBJ first (for example with assimp export, Debian's assimp-utils)",
+            "v 0 0 0\n".encode("utf-16"): "the file is UTF-16 text, and an OBJ model is read as UTF-8; "
+            "convert it first: iconv -f UTF-16 -t UTF-8 '{path}' > converted.obj",
+        }
+        for number, (data, message) in enumerate(cases.items()):
+            with self.subTest(message=message):
+                path = write_model("other%d" % number, data, binary=True)
+                expected = path + ": error: " + message.replace("{path}", path) + "\n"
                 ours = run(RAYTRACER, path, "--check")
                 self.assertEqual(ours.returncode, 3, ours.stderr)
                 self.assertEqual(ours.stderr.decode(), expected)
                 tool = run(sys.executable, TOOL, path, "--fit")
+                self.assertEqual(tool.returncode, 1)
                 self.assertEqual(tool.stderr.decode(), expected)
 
     def test_ply_is_refused_by_name(self):
@@ -351,7 +381,9 @@ class TheRigFollowsTheCamera(unittest.TestCase):
         return tuple((min(p[a] for p in positions) + max(p[a] for p in positions)) / 2 for a in range(3))
 
     def render(self, source, png, *options):
-        drawn = run(RAYTRACER, source, "-o", png, "--validate", *self.SIZE, *options)
+        # A saved scene has its floor or not already: --no-ground is for models alone.
+        size = [o for o in self.SIZE if o != "--no-ground" or source.endswith(".obj")]
+        drawn = run(RAYTRACER, source, "-o", png, "--validate", *size, *options)
         self.assertEqual(drawn.returncode, 0, drawn.stderr)
         return model_brightness(png)
 

@@ -137,8 +137,8 @@ std::vector<std::vector<std::string>> optionSets() {
         {"--up", {"y", "-y", "z", "-z", "x", "-x"}},
     };
     for (const auto& [flag, names] : choices)
-        for (const char* name : names)
-            sets.push_back({"a.scene", flag, name});
+        for (const char* name : names) // --up shapes a model: a scene file refuses it
+            sets.push_back({std::string(flag) == "--up" ? "a.obj" : "a.scene", flag, name});
     sets.push_back({"x y.scene",   "-o",
                     "o.png",       "--width",
                     "17",          "--height",

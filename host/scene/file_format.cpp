@@ -1,0 +1,62 @@
+#include "scene/file_format.h"
+
+#include <cstdint>
+#include <cstring>
+
+namespace {
+
+bool startsWith(std::string_view text, std::string_view prefix) {
+    return text.substr(0, prefix.size()) == prefix;
+}
+
+// UTF-16 by its byte-order mark, or by ASCII text with a NUL after (LE) or before (BE) every
+// character of its first line.
+bool isUtf16(std::string_view text) {
+    if (startsWith(text, "\xFF\xFE") || startsWith(text, "\xFE\xFF")) return true;
+    if (text.size() < 4) return false;
+    const std::size_t pairs = std::min<std::size_t>(text.size() / 2, 32);
+    int nulFirst = 0, nulSecond = 0;
+    for (std::size_t i = 0; i < pairs; ++i) {
+        const unsigned char a = static_cast<unsigned char>(text[2 * i]),
+                            b = static_cast<unsigned char>(text[2 * i + 1]);
+        nulSecond += a != 0 && a < 0x80 && b == 0;
+        nulFirst += a == 0 && b != 0 && b < 0x80;
+    }
+    return nulSecond == int(pairs) || nulFirst == int(pairs);
+}
+
+// A binary STL: an 80-byte header, a triangle count, then 50 bytes a triangle, exactly.
+bool isBinaryStl(std::string_view text) {
+    if (text.size() < 84) return false;
+    std::uint32_t triangles = 0;
+    std::memcpy(&triangles, text.data() + 80, 4);
+    return 84 + 50 * std::uint64_t(triangles) == text.size();
+}
+
+} // namespace
+
+std::optional<std::string> otherFileFormat(std::string_view text) {
+    if (isUtf16(text)) return "UTF-16 text";
+    if (startsWith(text, "ply\n") || startsWith(text, "ply\r\n")) return "a PLY model";
+    if (startsWith(text, "glTF")) return "a binary glTF model (.glb)";
+    if (isBinaryStl(text)) return "an STL model";
+    const std::string_view head = text.substr(0, 1024);
+    if (startsWith(text, "solid") && head.find("facet") != std::string_view::npos)
+        return "an STL model";
+    const std::size_t first = head.find_first_not_of(" \t\r\n");
+    if (first != std::string_view::npos && head[first] == '{' &&
+        head.find("\"asset\"") != std::string_view::npos)
+        return "a glTF model";
+    return std::nullopt;
+}
+
+std::string otherFormatMessage(const std::string& format, const std::string& fileName,
+                               const std::string& expected) {
+    if (format == "UTF-16 text")
+        return "the file is UTF-16 text, and " + expected +
+               " is read as UTF-8; convert it first: iconv -f UTF-16 -t UTF-8 '" + fileName +
+               "' > converted" + (expected == "an OBJ model" ? ".obj" : ".scene");
+    return "not " + expected + ": this is " + format +
+           ", which is not read; convert it to OBJ first (for example with assimp export, "
+           "Debian's assimp-utils)";
+}
