@@ -42,6 +42,7 @@ import sys
 
 FMT = "%.9g"
 
+MAX_MTL_BYTES = 64 << 20  # the largest material library read (Raytracer's kMaxMtlBytes)
 DEFAULT_MATERIAL = {"dif": (0.75, 0.75, 0.75), "spe": (0.1, 0.1, 0.1), "shi": 30.0}
 MAX_SHININESS = 1000.0
 
@@ -283,6 +284,8 @@ def read_obj(path, warn):
         keyword, args = fields[0], fields[1:]
         if keyword == "v":
             values = numbers(path, line, args, 3, "v", optional=4)
+            if len(values) == 5:
+                raise ConversionError(path, line, "v expects 3, 4, 6 or 7 numbers (x y z [w], or x y z r g b), got 5")
             model.positions.append(tuple(values[:3]))
             # x y z [w], or x y z r g b (a common extension) with a colour per vertex.
             model.colors.append(tuple(clamp(c, 0.0, 1.0) for c in values[3:6]) if len(values) >= 6 else None)
@@ -300,6 +303,12 @@ def read_obj(path, warn):
         elif keyword == "mtllib":
             for name in args:
                 mtl = os.path.join(os.path.dirname(path), name)
+                if os.path.exists(mtl) and not os.path.isfile(mtl):
+                    raise ConversionError(mtl, 0, "not a regular file (a device, a pipe or a folder): "
+                                          "a material library must be a file")
+                if os.path.exists(mtl) and os.path.getsize(mtl) > MAX_MTL_BYTES:
+                    raise ConversionError(mtl, 0, "the file holds %d bytes, more than a material library "
+                                          "may (%d MiB)" % (os.path.getsize(mtl), MAX_MTL_BYTES >> 20))
                 if os.path.exists(mtl):
                     materials.update(read_mtl(mtl, warn))
                 else:

@@ -53,5 +53,8 @@ inline MeshMaterial defaultObjMaterial() {
     return MeshMaterial{Material{glm::dvec3(0.75), glm::dvec3(0.1), 30.0}, {}};
 }
 
+// The largest material library read: far beyond any real one (a few kilobytes a material).
+inline constexpr std::uintmax_t kMaxMtlBytes = std::uintmax_t(64) << 20;
+
 // Ns above this is clamped: the Phong exponent of the scene format has no use for more.
 inline constexpr double kMaxObjShininess = 1000.0;

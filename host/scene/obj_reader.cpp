@@ -271,6 +271,8 @@ ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlL
         const std::string at = sceneLocation(fileName, statement.line);
         if (keyword == "v") {
             const std::vector<double> values = numbers(place, statement, 3, "v", 4);
+            if (values.size() == 5)
+                place.fail("v expects 3, 4, 6 or 7 numbers (x y z [w], or x y z r g b), got 5");
             model.positions.emplace_back(values[0], values[1], values[2]);
             // x y z [w], or x y z r g b with a colour per vertex.
             model.colors.push_back(values.size() >= 6 ? std::optional(clampedColor(values, 3))
@@ -347,6 +349,18 @@ ObjModel readObjFile(const std::filesystem::path& path) {
         MtlFile mtl{folder.empty() ? library : (std::filesystem::path(folder) / library).string(),
                     std::nullopt};
         if (!std::filesystem::exists(mtl.path, error)) return mtl;
+        // A file the model names is read only when it is a file, and not beyond a size no
+        // material library has: a device (mtllib /dev/zero) would be read without end.
+        if (!std::filesystem::is_regular_file(mtl.path, error))
+            throw SceneError(mtl.path, 0,
+                             "not a regular file (a device, a pipe or a folder): a material "
+                             "library must be a file");
+        if (const std::uintmax_t size = std::filesystem::file_size(mtl.path, error);
+            !error && size > kMaxMtlBytes)
+            throw SceneError(mtl.path, 0,
+                             "the file holds " + std::to_string(size) +
+                                 " bytes, more than a material library may (" +
+                                 std::to_string(kMaxMtlBytes >> 20) + " MiB)");
         const MappedFile text(mtl.path); // an unreadable library is an error, as the OBJ is
         mtl.text = std::string(text.text());
         return mtl;

@@ -94,6 +94,7 @@ VARIANTS = [
 MALFORMED = {
     "v 1 2\n": ":1: error: v expects 3 to 7 numbers, got 2",
     "v 1 2 x\n": ":1: error: v: 'x' is not a number",
+    "v 0 0 0 1 1\n": ":1: error: v expects 3, 4, 6 or 7 numbers (x y z [w], or x y z r g b), got 5",
     "v 1 2 1e999\n": ":1: error: v: '1e999' is not a finite number",
     "v 0 0 0\nv 1 0 0\nf 1 2\n": ":3: error: a face needs at least 3 corners, got 2",
     "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 4\n": ":5: error: vertex index 4 is out of range: 3 vertex positions defined so far",
@@ -198,6 +199,28 @@ class NativeModels(unittest.TestCase):
                 self.assertEqual(read(native), read(converted))
                 # The material that fell back is the default one: light grey.
                 self.assertIn("dif: 0.75 0.75 0.75", read(native).decode())
+
+    def test_a_library_that_is_no_file_is_refused_at_once(self):
+        # /dev/zero, and a link to it, would be read without end.
+        folder = os.path.join(OUTPUT, "device_library")
+        shutil.rmtree(folder, ignore_errors=True)
+        os.makedirs(folder)
+        os.symlink("/dev/zero", os.path.join(folder, "zero.mtl"))
+        os.makedirs(os.path.join(folder, "folder.mtl"))
+        for library in ("/dev/zero", "zero.mtl", "folder.mtl"):
+            with self.subTest(library=library):
+                path = os.path.join(folder, "model.obj")
+                with open(path, "w") as handle:
+                    handle.write("mtllib %s\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n" % library)
+                named = library if library.startswith("/") else os.path.join(folder, library)
+                expected = (named + ": error: not a regular file (a device, a pipe or a folder): a "
+                            "material library must be a file\n")
+                ours = run(RAYTRACER, path, "--check")
+                self.assertEqual(ours.returncode, 3, ours.stderr)
+                self.assertEqual(ours.stderr.decode(), expected)
+                tool = run(sys.executable, TOOL, path, "--fit")
+                self.assertEqual(tool.returncode, 1)
+                self.assertEqual(tool.stderr.decode(), expected)
 
     def test_other_formats_behind_an_obj_name_are_named(self):
         cases = {
