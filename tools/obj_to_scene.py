@@ -491,6 +491,10 @@ def write_scene(out, model, settings):
         triangles.append([(placement.place(positions[p]), normals[n] if n is not None else smooth.at(face, p),
                            model.colors[p] if model.colors[p] is not None else material["dif"], material)
                           for p, n in corners])
+    if not triangles:
+        raise ConversionError(settings.obj, 0, "every one of the model's %d triangles is degenerate (two "
+                              "corners at one position, or no area): nothing is left to render"
+                              % len(model.triangles))
     if settings.ground:
         triangles += [[(corner, (0.0, 1.0, 0.0), GROUND_MATERIAL["dif"], GROUND_MATERIAL) for corner in triangle]
                       for triangle in ground(placement)]
@@ -593,8 +597,12 @@ def main(argv=None):
             args.camera_target = add(args.camera_pos, (0.0, 0.0, -1.0))
         if args.out:
             temporary = args.out + ".tmp"
-            with open(temporary, "w", encoding="ascii", newline="\n") as out:
-                count = write_scene(out, model, args)
+            try:
+                with open(temporary, "w", encoding="ascii", newline="\n") as out:
+                    count = write_scene(out, model, args)
+            except ConversionError:
+                os.remove(temporary)  # never a half-written scene
+                raise
             os.replace(temporary, args.out)  # never a half-written scene
         else:
             count = write_scene(sys.stdout, model, args)

@@ -267,6 +267,11 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
         mesh.triangleMaterials.push_back(source.material);
         mesh.triangleLines.push_back(source.line);
     }
+    if (mesh.triangles.empty())
+        throw SceneError(fileName, 0,
+                         "every one of the model's " + std::to_string(model.triangles.size()) +
+                             " triangles is degenerate (two corners at one position, or no area): "
+                             "nothing is left to render");
     scene.meshes.push_back(std::move(mesh));
     if (setup.ground) scene.meshes.push_back(groundMesh(placement));
     if (degenerate > 0)

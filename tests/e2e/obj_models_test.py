@@ -104,6 +104,8 @@ MALFORMED = {
     "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/a 2 3x\n": ":4: error: vertex index '3x' is not a whole number",
     "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/2/3/4 2 3\n": ":4: error: face corner '1/2/3/4' is not v, v/vt, v/vt/vn or v//vn",
     "# nothing\n": ": error: no faces (f) found",
+    "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n": ": error: every one of the model's 2 triangles is "
+    "degenerate (two corners at one position, or no area): nothing is left to render",
     "v 0 0 0\x00\n": ": error: not an OBJ file: it is binary (NUL byte at offset 7)",
     "v 0 0 0\nv \xff\n": ": error: not an OBJ file: it is binary (invalid UTF-8 at offset 10)",
 }
