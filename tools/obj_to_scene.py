@@ -364,15 +364,24 @@ def dot(a, b):
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 
 
-def newell_normal(positions, face):
+def newell_normal(positions, face, scale):
     """Newell's sum of cross products over a polygon: its normal scaled by twice its area,
     so adding such sums weights faces by area; per polygon, so how a quad was split does
-    not tilt its corners' normals."""
+    not tilt its corners' normals. The positions are multiplied by scale, a power of two,
+    which changes no rounding."""
     n = (0.0, 0.0, 0.0)
+    s = lambda p: (p[0] * scale, p[1] * scale, p[2] * scale)
     for i in range(1, len(face) - 1):
-        a = positions[face[0]]
-        n = add(n, cross(sub(positions[face[i]], a), sub(positions[face[i + 1]], a)))
+        a = s(positions[face[0]])
+        n = add(n, cross(sub(s(positions[face[i]]), a), sub(s(positions[face[i + 1]]), a)))
     return n
+
+
+def newell_scale(positions):
+    """The power of two that brings the largest coordinate into [0.5, 1): a model at 1e300
+    would overflow to infinity, while every other model rounds exactly as unscaled."""
+    largest = max((abs(c) for p in positions for c in p), default=0.0)
+    return math.ldexp(1.0, -math.frexp(largest)[1])
 
 
 class SmoothNormals:
@@ -383,7 +392,8 @@ class SmoothNormals:
     def __init__(self, model, positions, crease):
         self.cosine = math.cos(crease * (math.pi / 180.0))
         self.everywhere = crease >= 180.0
-        self.newell = [newell_normal(positions, face) for face in model.faces]
+        scale = newell_scale(positions)
+        self.newell = [newell_normal(positions, face, scale) for face in model.faces]
         self.unit = [normalize(n) for n in self.newell]
         self.around = [[] for _ in positions]
         for f, face in enumerate(model.faces):

@@ -50,14 +50,28 @@ glm::dvec3 turnUp(glm::dvec3 v, UpAxis up) {
 // Newell's sum of cross products over a polygon: its normal scaled by twice its area, so
 // adding such sums weights faces by area; per polygon, so how a quad was split does not
 // tilt its corners' normals.
+// The positions are multiplied by scale, a power of two, which changes no rounding.
 glm::dvec3 newellNormal(const std::vector<glm::dvec3>& positions,
-                        std::span<const std::uint32_t> face) {
+                        std::span<const std::uint32_t> face, double scale) {
     glm::dvec3 normal(0.0);
     for (std::size_t i = 1; i + 1 < face.size(); ++i) {
-        const glm::dvec3 a = positions[face[0]];
-        normal += glm::cross(positions[face[i]] - a, positions[face[i + 1]] - a);
+        const glm::dvec3 a = positions[face[0]] * scale;
+        normal += glm::cross(positions[face[i]] * scale - a, positions[face[i + 1]] * scale - a);
     }
     return normal;
+}
+
+// The power of two that brings the largest coordinate into [0.5, 1): the Newell normals of
+// a model at 1e300 would overflow to infinity (and its normals be NaN), while for every
+// other model the scaled arithmetic rounds exactly as the unscaled one, so its normals are
+// the same bits.
+double newellScale(const std::vector<glm::dvec3>& positions) {
+    double largest = 0.0;
+    for (const glm::dvec3& p : positions)
+        largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    int exponent = 0;
+    std::frexp(largest, &exponent);
+    return std::ldexp(1.0, -exponent);
 }
 
 // The smooth normals of corners without one: for face f and its position p, the
@@ -69,8 +83,9 @@ class SmoothNormals {
                   double creaseDegrees)
         : cosine_(std::cos(creaseDegrees * (kPi / 180.0))), everywhere_(creaseDegrees >= 180.0) {
         facesAround_.resize(positions.size());
+        const double scale = newellScale(positions);
         for (std::size_t f = 0; f < faceCount(model); ++f) {
-            newell_.push_back(newellNormal(positions, facePositions(model, f)));
+            newell_.push_back(newellNormal(positions, facePositions(model, f), scale));
             unit_.push_back(normalizedOrZero(newell_.back()));
             for (const std::uint32_t p :
                  facePositions(model, f)) // each face once, though p repeats

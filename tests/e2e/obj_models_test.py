@@ -53,6 +53,8 @@ MODELS = {
     "materials": ("mtllib mats.mtl\nv 0 0 -3\nv 1 0 -3\nv 0 1 -3\nv 1 1 -2\nusemtl shiny\nf 1 2 3\n"
                   "usemtl plain\nf 2 4 3\nusemtl nosuch\nf 1 4 2\n", MTL),
     "no_library": ("mtllib gone.mtl\nusemtl x\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", None),
+    # coordinates near the largest double: smooth normals without overflow (no nan)
+    "huge": ("v 1e300 0 0\nv 0 1e300 0\nv 0 0 1e300\nv 1e300 1e300 -1e300\nf 1 2 3\nf 2 4 3\n", None),
     # two degenerate faces (a repeated corner, three corners on a line) and a continued line
     "degenerate": ("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 1 2\nf 1 2 3\nf 1 \\\n 2 4\n"
                    "curv 0 1\n", None),
@@ -166,6 +168,14 @@ class NativeModels(unittest.TestCase):
                     self.assertEqual(tool.returncode, 0, tool.stderr)
                     self.assertEqual(read(native), read(converted))
                     self.assertEqual(warnings(ours.stderr), warnings(tool.stderr))
+
+    def test_a_saved_scene_reads_back_whatever_the_coordinates(self):
+        path = write_model("huge_back", *MODELS["huge"])
+        scene = path + ".scene"
+        self.assertEqual(run(RAYTRACER, path, "--save-scene", scene, "--check").returncode, 0)
+        self.assertNotIn(b"nan", read(scene))
+        back = run(RAYTRACER, scene, "--check")
+        self.assertEqual(back.returncode, 0, back.stderr)
 
     def test_degenerate_faces_are_counted(self):
         path = write_model("degenerate_count", *MODELS["degenerate"])
