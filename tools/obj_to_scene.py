@@ -85,7 +85,8 @@ def clamp(x, low, high):
 def logical_lines(path):
     """(line number, text) of each statement; a trailing backslash continues a line."""
     try:
-        with open(path, "r", encoding="utf-8-sig", errors="replace") as handle:
+        # Bytes that are not UTF-8 are kept as they are (surrogate escapes), and written so.
+        with open(path, "r", encoding="utf-8-sig", errors="surrogateescape") as handle:
             pending, start = "", 0
             for number, raw in enumerate(handle, 1):
                 text = raw.rstrip("\r\n")
@@ -106,24 +107,20 @@ WHITESPACE_BYTES = b" \t\n\v\f\r"
 
 
 def binary_reason(path):
-    """Why the file is not text at all (as Raytracer says it), or None: the first NUL,
-    control byte other than whitespace, or byte that is not UTF-8."""
+    """Why the file is not text at all (as Raytracer says it), or None: the first NUL or
+    control byte other than whitespace. Any other byte is text: names and comments come in
+    whatever encoding the exporter used (a Latin-1 material name), compared as bytes."""
     try:
         with open(path, "rb") as handle:
             data = handle.read()
     except OSError:
         return None  # logical_lines reports it
-    bad_utf8 = None
-    try:
-        data.decode("utf-8")
-    except UnicodeDecodeError as error:
-        bad_utf8 = error.start
-    for offset, byte in enumerate(data[:bad_utf8]):
+    for offset, byte in enumerate(data):
         if byte == 0:
             return "NUL byte at offset %d" % offset
         if (byte < 0x20 and byte not in WHITESPACE_BYTES) or byte == 0x7F:
             return "control byte 0x%02x at offset %d" % (byte, offset)
-    return None if bad_utf8 is None else "invalid UTF-8 at offset %d" % bad_utf8
+    return None
 
 
 def numbers(path, line, fields, count, what, optional=0):
@@ -598,6 +595,7 @@ def main(argv=None):
     if not (0.0 < args.fov < 180.0) or args.width < 1 or args.height < 1:
         parser.error("--fov must lie strictly between 0 and 180, --width and --height be at least 1")
 
+    sys.stderr.reconfigure(errors="surrogateescape")  # names in the file's own bytes
     warn = lambda message: print(message, file=sys.stderr)
     try:
         model = read_obj(args.obj, warn)

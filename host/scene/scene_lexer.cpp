@@ -152,7 +152,7 @@ const char* scanSimpleDecimal(const char* p, const char* const end, double& valu
 
 } // namespace
 
-std::optional<std::string> binaryReason(std::string_view text) {
+std::optional<std::string> binaryReason(std::string_view text, TextEncoding encoding) {
     static const char hex[] = "0123456789abcdef";
     const std::size_t size = text.size();
     for (std::size_t i = 0; i < size;) {
@@ -173,6 +173,8 @@ std::optional<std::string> binaryReason(std::string_view text) {
         } else if (c < 0x80) {
             return std::string("control byte 0x") + hex[c >> 4] + hex[c & 15] + " at offset " +
                    std::to_string(i);
+        } else if (encoding == TextEncoding::AnyBytes) {
+            ++i;
         } else if (std::size_t length = utf8SequenceLength(text, i)) {
             i += length;
         } else {

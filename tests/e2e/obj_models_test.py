@@ -109,7 +109,9 @@ MALFORMED = {
     "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n": ": error: every one of the model's 2 triangles is "
     "degenerate (two corners at one position, or no area): nothing is left to render",
     "v 0 0 0\x00\n": ": error: not an OBJ file: it is binary (NUL byte at offset 7)",
-    "v 0 0 0\nv \xff\n": ": error: not an OBJ file: it is binary (invalid UTF-8 at offset 10)",
+    "v 0 0 0\nv \x1b\n": ": error: not an OBJ file: it is binary (control byte 0x1b at offset 10)",
+    # a byte that is not UTF-8 is text in an OBJ (names come in any encoding), here a bad number
+    "v 0 0 0\nv \xff 0 0\n": ":2: error: v: '\ufffd' is not a number",
 }
 
 # A wrong line of a material library is a warning: its material falls back to the default
@@ -135,8 +137,8 @@ def write_model(name, obj, mtl=None, binary=False):
     with open(path, "wb") as handle:
         handle.write(obj if isinstance(obj, bytes) else obj.encode("latin-1") if binary else obj.encode("utf-8"))
     if mtl is not None:
-        with open(os.path.join(folder, "mats.mtl"), "w") as handle:
-            handle.write(mtl)
+        with open(os.path.join(folder, "mats.mtl"), "wb") as handle:
+            handle.write(mtl if isinstance(mtl, bytes) else mtl.encode("utf-8"))
     return path
 
 
@@ -150,7 +152,7 @@ def read(path):
 
 
 def warnings(stderr):
-    return sorted(line for line in stderr.decode().splitlines() if ": warning: " in line
+    return sorted(line for line in stderr.decode(errors="surrogateescape").splitlines() if ": warning: " in line
                   and "degenerate" not in line)
 
 
@@ -176,6 +178,30 @@ class NativeModels(unittest.TestCase):
         self.assertNotIn(b"nan", read(scene))
         back = run(RAYTRACER, scene, "--check")
         self.assertEqual(back.returncode, 0, back.stderr)
+
+    def test_names_and_comments_are_any_bytes(self):
+        # A Latin-1 material name in the OBJ and its MTL, and Latin-1 and UTF-16-looking bytes
+        # in a comment: the names match as bytes, nothing is called binary.
+        obj = (b"mtllib mats.mtl\n# r\xe9sum\xe9 \xff\xfe\nusemtl caf\xe9\n"
+               b"v 0 0 -3\nv 1 0 -3\nv 0 1 -3\nf 1 2 3\nusemtl caf\xc3\xa9\nf 1 3 2\n")
+        mtl = b"newmtl caf\xe9\nKd 0.9 0.1 0.1\nnewmtl caf\xc3\xa9\nKd 0.1 0.9 0.1\n"
+        path = write_model("any_bytes", obj, mtl)
+        native, converted = path[:-4] + ".native.scene", path[:-4] + ".tool.scene"
+        ours = run(RAYTRACER, path, "--save-scene", native)
+        self.assertEqual(ours.returncode, 0, ours.stderr)
+        self.assertEqual(warnings(ours.stderr), [])
+        tool = run(sys.executable, TOOL, path, "-o", converted, "--fit", "--ground", "--rig")
+        self.assertEqual(tool.returncode, 0, tool.stderr)
+        self.assertEqual(read(native), read(converted))
+        text = read(native).decode()
+        self.assertIn("dif: 0.9 0.1 0.1", text)  # the Latin-1 name found its material
+        self.assertIn("dif: 0.1 0.9 0.1", text)  # and the UTF-8 one its own
+        # An unknown Latin-1 name is named in the warning in the file's own bytes.
+        path = write_model("any_bytes_unknown", obj.replace(b"usemtl caf\xe9", b"usemtl na\xefve"), mtl)
+        ours = run(RAYTRACER, path, "--check")
+        tool = run(sys.executable, TOOL, path, "--fit")
+        self.assertIn(b"unknown material 'na\xefve'", ours.stderr)
+        self.assertEqual(warnings(ours.stderr), warnings(tool.stderr))
 
     def test_degenerate_faces_are_counted(self):
         path = write_model("degenerate_count", *MODELS["degenerate"])
