@@ -34,7 +34,9 @@ Scene perVertexCopy(const Scene& scene) {
 }
 
 template <typename T> bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+    // (memcmp must not be given the null data() of an empty vector)
+    return a.size() == b.size() &&
+           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }
 
 void expectSamePacking(const PackedScene& a, const PackedScene& b) {
