@@ -217,6 +217,73 @@ def resolve(path, line, text, count, what):
     return resolved
 
 
+PLANAR_TOLERANCE = 1e-4  # Raytracer's kPlanarTolerance
+
+
+def triangulate(corners):
+    """A polygon's triangles (corner indices) and whether it was concave but fanned, as
+    Raytracer's triangulatePolygon (host/scene/polygon_triangulation.cpp), operation for
+    operation: a fan when convex, ear clipping when concave and planar, a fan (counted)
+    when concave and bent out of its plane or crossing itself."""
+    n = len(corners)
+    fan = lambda: [(0, i, i + 1) for i in range(1, n - 1)]
+    if n <= 3:
+        return fan(), False
+    normal = (0.0, 0.0, 0.0)
+    for i in range(1, n - 1):
+        normal = add(normal, cross(sub(corners[i], corners[0]), sub(corners[i + 1], corners[0])))
+    axis = 0
+    for k in (1, 2):
+        if abs(normal[k]) > abs(normal[axis]):
+            axis = k
+    if normal[axis] == 0.0:
+        return fan(), False
+    sign = 1.0 if normal[axis] > 0.0 else -1.0
+    u_axis, v_axis = (axis + 1) % 3, (axis + 2) % 3
+    points = [(c[u_axis], c[v_axis]) for c in corners]
+
+    def turn(a, b, c):
+        return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+
+    if all(turn(points[(i + n - 1) % n], points[i], points[(i + 1) % n]) * sign >= 0.0 for i in range(n)):
+        return fan(), False
+    length = math.sqrt(dot(normal, normal))
+    reach, off_plane = 0.0, 0.0
+    for corner in corners:
+        d = sub(corner, corners[0])
+        reach = max(reach, math.sqrt(dot(d, d)))
+        off_plane = max(off_plane, abs(dot(d, normal)) / length)
+    if off_plane > PLANAR_TOLERANCE * reach:
+        return fan(), True
+    left, triangles = list(range(n)), []
+    while len(left) > 3:
+        m, clipped = len(left), False
+        for j in range(m):
+            a, b, c = left[(j + m - 1) % m], left[j], left[(j + 1) % m]
+            if turn(points[a], points[b], points[c]) * sign <= 0.0:
+                continue
+            empty = True
+            for p in left:
+                q = points[p]
+                if q == points[a] or q == points[b] or q == points[c]:
+                    continue
+                if (turn(points[a], points[b], q) * sign >= 0.0 and turn(points[b], points[c], q) * sign >= 0.0
+                        and turn(points[c], points[a], q) * sign >= 0.0):
+                    empty = False
+                    break
+            if not empty:
+                continue
+            triangles.append((a, b, c))
+            del left[j]
+            clipped = True
+            break
+        if not clipped:
+            triangles += [(left[0], left[i], left[i + 1]) for i in range(1, len(left) - 1)]
+            return triangles, True
+    triangles.append((left[0], left[1], left[2]))
+    return triangles, False
+
+
 def parse_corner(path, line, token, model):
     parts = token.split("/")
     if len(parts) > 3 or not parts[0]:
@@ -274,6 +341,7 @@ def read_obj(path, warn):
     # Libraries not found, and the faces whose material was to come from one: one warning at
     # the end says both, in place of one for each usemtl.
     missing, missing_line, fell_back, faces_fell_back = [], 0, False, 0
+    fanned_concave, first_fanned_line = 0, 0  # concave faces that could not be clipped
     for line, text in logical_lines(path):
         fields = text.split("#", 1)[0].split()
         if not fields:
@@ -294,8 +362,13 @@ def read_obj(path, warn):
             corners = [parse_corner(path, line, token, model) for token in args]
             model.faces.append([p for p, _n in corners])
             faces_fell_back += 1 if fell_back else 0
-            for i in range(1, len(corners) - 1):  # a fan from the first corner
-                model.triangles.append(((corners[0], corners[i], corners[i + 1]), material, line,
+            split, fanned = triangulate([model.positions[p] for p, _n in corners])
+            if fanned:
+                if not fanned_concave:
+                    first_fanned_line = line
+                fanned_concave += 1
+            for a, b, c in split:
+                model.triangles.append(((corners[a], corners[b], corners[c]), material, line,
                                         len(model.faces) - 1))
         elif keyword == "mtllib":
             for name in args:
@@ -327,6 +400,9 @@ def read_obj(path, warn):
             warn("%s:%d: warning: '%s' statements are ignored" % (path, line, keyword))
     if not model.triangles:
         raise ConversionError(path, 0, "no faces (f) found")
+    if fanned_concave:
+        warn("%s:%d: warning: %d concave face(s) not in one plane, or crossing themselves, split as fans "
+             "from their first corner" % (path, first_fanned_line, fanned_concave))
     if missing:
         libraries = missing[0] if len(missing) == 1 else ", ".join(missing[:-1]) + " and " + missing[-1]
         warn("%s:%d: warning: material %s %s not found; %d of %d faces use the default material"

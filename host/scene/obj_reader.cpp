@@ -5,6 +5,7 @@
 
 #include "scene/file_format.h"
 #include "scene/mapped_file.h"
+#include "scene/polygon_triangulation.h"
 #include "scene/scene_error.h"
 #include "scene/scene_lexer.h"
 
@@ -265,6 +266,8 @@ ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlL
     int missingLine = 0;
     bool fellBack = false; // the current usemtl names a material no library defines
     std::size_t facesFellBack = 0;
+    std::size_t fannedConcave = 0; // concave faces that could not be clipped
+    int firstFannedLine = 0;
     forEachStatement(text, [&](const Statement& statement) {
         const Place place{fileName, statement.line};
         const std::string_view keyword = statement.words[0];
@@ -292,9 +295,14 @@ ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlL
             model.faceStarts.push_back(model.facePositions.size());
             const auto face = static_cast<std::uint32_t>(faceCount(model) - 1);
             facesFellBack += fellBack ? 1 : 0;
-            for (std::size_t i = 1; i + 1 < corners.size(); ++i) // a fan from the first corner
+            std::vector<glm::dvec3> points;
+            for (const ObjCorner& corner : corners)
+                points.push_back(model.positions[corner.position]);
+            const PolygonTriangles split = triangulatePolygon(points);
+            if (split.fannedConcave && fannedConcave++ == 0) firstFannedLine = statement.line;
+            for (const auto& [a, b, c] : split.triangles)
                 model.triangles.push_back(
-                    {{corners[0], corners[i], corners[i + 1]}, material, face, statement.line});
+                    {{corners[a], corners[b], corners[c]}, material, face, statement.line});
         } else if (keyword == "mtllib") {
             for (std::size_t i = 1; i < statement.words.size(); ++i) {
                 const MtlFile library = lookUpMtl(std::string(statement.words[i]));
@@ -322,6 +330,11 @@ ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlL
         }
     });
     if (model.triangles.empty()) throw SceneError(fileName, 0, "no faces (f) found");
+    if (fannedConcave > 0)
+        model.warnings.push_back(sceneLocation(fileName, firstFannedLine) +
+                                 "warning: " + std::to_string(fannedConcave) +
+                                 " concave face(s) not in one plane, or crossing themselves, "
+                                 "split as fans from their first corner");
     if (!missingLibraries.empty()) {
         std::string libraries;
         for (std::size_t i = 0; i < missingLibraries.size(); ++i)

@@ -1,9 +1,10 @@
 // Wavefront OBJ text (and the MTL files it names) to an ObjModel. The rules, which
 // tools/obj_to_scene.py follows too, are in docs/models.md: faces of 3 or more corners
-// (v, v/vt, v/vt/vn, v//vn; 1-based or negative indices), split into a fan from the first
-// corner; vn as given; `v x y z r g b` colours; Kd, Ks and Ns of newmtl materials. Texture
-// coordinates, groups and smoothing groups are read and ignored. A malformed line is a
-// SceneError "FILE:LINE: error: ..."; a binary file is not an OBJ file.
+// (v, v/vt, v/vt/vn, v//vn; 1-based or negative indices), split into triangles
+// (polygon_triangulation.h: a fan when convex, ear clipping when concave); vn as given; `v x y z r
+// g b` colours; Kd, Ks and Ns of newmtl materials. Texture coordinates, groups and smoothing groups
+// are read and ignored. A malformed line is a SceneError "FILE:LINE: error: ..."; a binary file is
+// not an OBJ file.
 #pragma once
 
 #include "scene/obj_model.h"

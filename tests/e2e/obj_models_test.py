@@ -79,6 +79,21 @@ def prism(sides=8):
 
 MODELS["cylinder"] = (prism(), None)
 
+
+# A washer as one polygon of 66 corners (two circles of 32 joined by a bridge): concave,
+# split by ear clipping; bent, the same ring is fanned with one warning.
+def ring(bend=0.0, k=32):
+    points = [(math.cos(2 * math.pi * i / k), math.sin(2 * math.pi * i / k), 0.0) for i in range(k)]
+    points += [(0.5 * x, 0.5 * y, 0.0) for x, y, _z in points]
+    if bend:
+        points[3] = (points[3][0], points[3][1], bend)
+    corners = list(range(1, k + 1)) + [1, k + 1] + [k + 1 + (k - i) % k for i in range(1, k)] + [k + 1]
+    return "".join("v %.9g %.9g %.9g\n" % p for p in points) + "f " + " ".join(map(str, corners)) + "\n"
+
+
+MODELS["ring"] = (ring(), None)
+MODELS["bent_ring"] = (ring(bend=0.2), None)
+
 # Raytracer's options for a model, and the tool's that build the same scene.
 VARIANTS = [
     ([], ["--fit", "--ground", "--rig"]),
@@ -202,6 +217,20 @@ class NativeModels(unittest.TestCase):
         tool = run(sys.executable, TOOL, path, "--fit")
         self.assertIn(b"unknown material 'na\xefve'", ours.stderr)
         self.assertEqual(warnings(ours.stderr), warnings(tool.stderr))
+
+    def test_a_concave_face_keeps_its_hole(self):
+        # The washer seen face on, without a floor: its middle shows the background.
+        path = write_model("ring_hole", *MODELS["ring"])
+        png = path + ".png"
+        drawn = run(RAYTRACER, path, "--no-ground", "--width", "64", "--height", "48", "-o", png)
+        self.assertEqual(drawn.returncode, 0, drawn.stderr)
+        _width, _height, rows = pixels(png)
+        self.assertEqual(rows[24][32], (255, 255, 255))  # the background, through the hole
+        self.assertNotEqual(rows[24][32 + 15], (255, 255, 255))  # the ring itself
+        bent = write_model("ring_bent", *MODELS["bent_ring"])
+        ours = run(RAYTRACER, bent, "--check")
+        self.assertIn(bent + ":65: warning: 1 concave face(s) not in one plane, or crossing "
+                      "themselves, split as fans from their first corner", ours.stderr.decode())
 
     def test_degenerate_faces_are_counted(self):
         path = write_model("degenerate_count", *MODELS["degenerate"])

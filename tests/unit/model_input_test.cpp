@@ -1,13 +1,17 @@
 // Model and scene files as users' files are: another format behind the expected name is
-// named by its first bytes (PLY, STL, glTF, UTF-16 text), and a material library that is
-// missing is one warning that says how many faces fell back to the default material.
+// named by its first bytes (PLY, STL, glTF, UTF-16 text), a material library that is
+// missing is one warning that says how many faces fell back to the default material, and
+// a concave face is split by ear clipping (its area kept, its holes open).
 #include "scene/file_format.h"
 #include "scene/obj_reader.h"
+#include "scene/polygon_triangulation.h"
 #include "scene/scene_error.h"
 #include "scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <optional>
@@ -113,4 +117,126 @@ TEST(ModelInput, AMissingLibraryIsOneWarningWithTheFacesThatFellBack) {
     ASSERT_EQ(found.warnings.size(), 1u);
     EXPECT_EQ(found.warnings[0],
               "m.obj:5: warning: unknown material 'nosuch'; default material used");
+}
+
+namespace {
+
+double triangleArea(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    return 0.5 * glm::length(glm::cross(b - a, c - a));
+}
+
+double areaOf(const std::vector<glm::dvec3>& corners, const PolygonTriangles& split) {
+    double area = 0.0;
+    for (const auto& [a, b, c] : split.triangles)
+        area += triangleArea(corners[a], corners[b], corners[c]);
+    return area;
+}
+
+// Whether point lies inside (or on) the triangle a b c of the z = 0 plane.
+bool covers(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& p) {
+    auto side = [](const glm::dvec3& u, const glm::dvec3& v, const glm::dvec3& q) {
+        return (v.x - u.x) * (q.y - u.y) - (v.y - u.y) * (q.x - u.x);
+    };
+    const double d1 = side(a, b, p), d2 = side(b, c, p), d3 = side(c, a, p);
+    return (d1 >= 0 && d2 >= 0 && d3 >= 0) || (d1 <= 0 && d2 <= 0 && d3 <= 0);
+}
+
+// A ring of k corners outside and k inside, cut open along a bridge from outer corner 0
+// to inner corner 0: 2k + 2 corners, the two bridge ends each twice.
+std::vector<glm::dvec3> ring(int k, double outer, double inner, double z = 0.0) {
+    std::vector<glm::dvec3> corners;
+    for (int i = 0; i <= k; ++i) {
+        const double a = 2.0 * M_PI * double(i % k) / k;
+        corners.push_back({outer * std::cos(a), outer * std::sin(a), z});
+    }
+    for (int i = 0; i <= k; ++i) { // the other way round
+        const double a = -2.0 * M_PI * double(i % k) / k;
+        corners.push_back({inner * std::cos(a), inner * std::sin(a), z});
+    }
+    return corners;
+}
+
+double shoelace(const std::vector<glm::dvec3>& corners) {
+    double twice = 0.0;
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+        const glm::dvec3 &a = corners[i], &b = corners[(i + 1) % corners.size()];
+        twice += a.x * b.y - b.x * a.y;
+    }
+    return std::abs(twice) / 2.0;
+}
+
+} // namespace
+
+TEST(PolygonTriangulation, ConvexPolygonsAreTheFanTheyAlwaysWere) {
+    const std::vector<glm::dvec3> quad = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    const PolygonTriangles split = triangulatePolygon(quad);
+    EXPECT_EQ(split.triangles, (std::vector<std::array<std::size_t, 3>>{{0, 1, 2}, {0, 2, 3}}));
+    EXPECT_FALSE(split.fannedConcave);
+    // A bent quad stays a fan, with no word: only concave ones are checked for flatness.
+    const std::vector<glm::dvec3> bent = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0.5}, {0, 1, 0}};
+    EXPECT_EQ(triangulatePolygon(bent).triangles.size(), 2u);
+    EXPECT_FALSE(triangulatePolygon(bent).fannedConcave);
+}
+
+TEST(PolygonTriangulation, ConcavePlanarPolygonsKeepTheirAreaAndTheirHoles) {
+    // The 66-corner ring: 64 triangles of exactly the ring's area, none over its hole.
+    const std::vector<glm::dvec3> corners = ring(32, 1.0, 0.5, -2.0);
+    ASSERT_EQ(corners.size(), 66u);
+    const PolygonTriangles split = triangulatePolygon(corners);
+    EXPECT_FALSE(split.fannedConcave);
+    EXPECT_EQ(split.triangles.size(), 64u);
+    EXPECT_NEAR(areaOf(corners, split), shoelace(corners), 1e-12);
+    for (const auto& [a, b, c] : split.triangles)
+        EXPECT_FALSE(covers(corners[a], corners[b], corners[c], {0.0, 0.0, -2.0}));
+    // A ten-pointed star, turned the other way and tilted out of every axis plane.
+    std::vector<glm::dvec3> star;
+    for (int i = 0; i < 10; ++i) {
+        const double r = i % 2 ? 0.4 : 1.0, a = -2.0 * M_PI * i / 10.0;
+        star.push_back({r * std::cos(a), r * std::sin(a), 0.0});
+    }
+    const double flat = areaOf(star, triangulatePolygon(star));
+    EXPECT_NEAR(flat, shoelace(star), 1e-12);
+    for (glm::dvec3& p : star)
+        p = glm::dvec3(p.x, 0.6 * p.y - 0.8 * p.z, 0.8 * p.y + 0.6 * p.z) + glm::dvec3(3, -1, 2);
+    const PolygonTriangles tilted = triangulatePolygon(star);
+    EXPECT_FALSE(tilted.fannedConcave);
+    EXPECT_EQ(tilted.triangles.size(), 8u);
+    EXPECT_NEAR(areaOf(star, tilted), flat, 1e-12);
+}
+
+TEST(PolygonTriangulation, ConcavePolygonsOutOfTheirPlaneOrCrossingThemselvesAreFanned) {
+    std::vector<glm::dvec3> bent = ring(8, 1.0, 0.5);
+    bent[3].z = 0.1; // far beyond 1e-4 of the ring's reach
+    const PolygonTriangles split = triangulatePolygon(bent);
+    EXPECT_TRUE(split.fannedConcave);
+    EXPECT_EQ(split.triangles.front(), (std::array<std::size_t, 3>{0, 1, 2}));
+    // A pentagram drawn as one polygon crosses itself: no ear can be cut where it folds.
+    std::vector<glm::dvec3> pentagram;
+    for (int i = 0; i < 5; ++i) {
+        const double a = 2.0 * M_PI * (2 * i) / 5.0;
+        pentagram.push_back({std::cos(a), std::sin(a), 0.0});
+    }
+    pentagram.push_back({0.5, 0.5, 0.0}); // and a sixth corner, so it is not all convex turns
+    const PolygonTriangles crossing = triangulatePolygon(pentagram);
+    EXPECT_EQ(crossing.triangles.size(), 4u);
+    EXPECT_TRUE(crossing.fannedConcave);
+}
+
+TEST(ModelInput, AConcaveFaceOutOfItsPlaneIsOneWarning) {
+    std::string obj;
+    std::vector<glm::dvec3> bent = ring(8, 1.0, 0.5);
+    bent[3].z = 0.1;
+    for (const glm::dvec3& p : bent)
+        obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) +
+               "\n";
+    std::string face = "f";
+    for (std::size_t i = 1; i <= bent.size(); ++i)
+        face += " " + std::to_string(i);
+    obj += face + "\n" + face + "\n";
+    const ObjModel model = parseObj(obj, "m.obj", [](const std::string& name) {
+        return MtlFile{name, std::nullopt};
+    });
+    ASSERT_EQ(model.warnings.size(), 1u);
+    EXPECT_EQ(model.warnings[0], "m.obj:19: warning: 2 concave face(s) not in one plane, or "
+                                 "crossing themselves, split as fans from their first corner");
 }
