@@ -295,6 +295,11 @@ ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlL
             model.faceStarts.push_back(model.facePositions.size());
             const auto face = static_cast<std::uint32_t>(faceCount(model) - 1);
             facesFellBack += fellBack ? 1 : 0;
+            if (corners.size() == 3) { // the common case, without a polygon's work
+                model.triangles.push_back(
+                    {{corners[0], corners[1], corners[2]}, material, face, statement.line});
+                return;
+            }
             std::vector<glm::dvec3> points;
             for (const ObjCorner& corner : corners)
                 points.push_back(model.positions[corner.position]);
