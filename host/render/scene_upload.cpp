@@ -108,16 +108,21 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
         offsets[array.binding] = array.bytes ? size : 0;
         size = alignUp(size + array.bytes, alignment);
     }
-    // Straight into the buffer's memory (or its staging copy): zeros between the arrays and
-    // in the shared slot, each array at its offset.
+    // Straight into the buffer's memory (or its staging copy): each array at its offset,
+    // zeros in the shared slot and in each array's padding up to the next, so every byte is
+    // written once (zeroing the whole buffer first wrote a large scene's twice).
     scene.buffer = createFilledDeviceBuffer(
         context, size,
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
         [&](void* destination) {
             auto* bytes = static_cast<std::uint8_t*>(destination);
-            std::memset(bytes, 0, size);
-            for (const ArrayView& array : arrays)
-                if (array.bytes) array.write(bytes + offsets[array.binding]);
+            std::memset(bytes, 0, alignment);
+            for (const ArrayView& array : arrays) {
+                if (!array.bytes) continue;
+                const VkDeviceSize end = offsets[array.binding] + array.bytes;
+                array.write(bytes + offsets[array.binding]);
+                std::memset(bytes + end, 0, alignUp(end, alignment) - end);
+            }
         });
     for (const ArrayView& array : arrays)
         scene.ranges[array.binding] = {scene.buffer.buffer, offsets[array.binding],
