@@ -35,28 +35,46 @@ bool isBinaryStl(std::string_view text) {
 
 } // namespace
 
-std::optional<std::string> otherFileFormat(std::string_view text) {
-    if (isUtf16(text)) return "UTF-16 text";
-    if (startsWith(text, "ply\n") || startsWith(text, "ply\r\n")) return "a PLY model";
-    if (startsWith(text, "glTF")) return "a binary glTF model (.glb)";
-    if (isBinaryStl(text)) return "an STL model";
+std::optional<OtherFormat> otherFileFormat(std::string_view text) {
+    if (isUtf16(text)) return OtherFormat::Utf16Text;
+    if (startsWith(text, "ply\n") || startsWith(text, "ply\r\n")) return OtherFormat::Ply;
+    if (startsWith(text, "glTF")) return OtherFormat::BinaryGltf;
+    if (isBinaryStl(text)) return OtherFormat::Stl;
     const std::string_view head = text.substr(0, 1024);
     if (startsWith(text, "solid") && head.find("facet") != std::string_view::npos)
-        return "an STL model";
+        return OtherFormat::Stl;
     const std::size_t first = head.find_first_not_of(" \t\r\n");
     if (first != std::string_view::npos && head[first] == '{' &&
         head.find("\"asset\"") != std::string_view::npos)
-        return "a glTF model";
+        return OtherFormat::Gltf;
     return std::nullopt;
 }
 
-std::string otherFormatMessage(const std::string& format, const std::string& fileName,
-                               const std::string& expected) {
-    if (format == "UTF-16 text")
-        return "the file is UTF-16 text, and " + expected +
+std::string formatName(OtherFormat format) {
+    switch (format) {
+    case OtherFormat::Utf16Text:
+        return "UTF-16 text";
+    case OtherFormat::Ply:
+        return "a PLY model";
+    case OtherFormat::Stl:
+        return "an STL model";
+    case OtherFormat::Gltf:
+        return "a glTF model";
+    case OtherFormat::BinaryGltf:
+        return "a binary glTF model (.glb)";
+    }
+    return "another format";
+}
+
+std::string otherFormatMessage(OtherFormat format, const std::string& fileName,
+                               ExpectedFile expected) {
+    const bool obj = expected == ExpectedFile::ObjModel;
+    const std::string readAs = obj ? "an OBJ model" : "a scene file";
+    if (format == OtherFormat::Utf16Text)
+        return "the file is UTF-16 text, and " + readAs +
                " is read as UTF-8; convert it first: iconv -f UTF-16 -t UTF-8 '" + fileName +
-               "' > converted" + (expected == "an OBJ model" ? ".obj" : ".scene");
-    return "not " + expected + ": this is " + format +
+               "' > converted" + (obj ? ".obj" : ".scene");
+    return "not " + readAs + ": this is " + formatName(format) +
            ", which is not read; convert it to OBJ first (for example with assimp export, "
            "Debian's assimp-utils)";
 }

@@ -7,11 +7,17 @@
 #include <string>
 #include <string_view>
 
-// "a PLY model", "an STL model", "a glTF model", "a binary glTF model (.glb)", or
-// "UTF-16 text"; nothing for anything else (scene text, OBJ text, or other bytes).
-std::optional<std::string> otherFileFormat(std::string_view text);
+enum class OtherFormat { Utf16Text, Ply, Stl, Gltf, BinaryGltf };
 
-// The error's message for a file of that format read as `expected` ("a scene file" or "an
-// OBJ model"): what it is, and what to do about it.
-std::string otherFormatMessage(const std::string& format, const std::string& fileName,
-                               const std::string& expected);
+// One of those, or nothing for anything else (scene text, OBJ text, or other bytes).
+std::optional<OtherFormat> otherFileFormat(std::string_view text);
+
+// "UTF-16 text", "a PLY model", "an STL model", "a glTF model", "a binary glTF model (.glb)".
+std::string formatName(OtherFormat format);
+
+// What the file was read as.
+enum class ExpectedFile { Scene, ObjModel };
+
+// The error's message for a file of that format: what it is, and what to do about it.
+std::string otherFormatMessage(OtherFormat format, const std::string& fileName,
+                               ExpectedFile expected);

@@ -251,7 +251,8 @@ std::string directoryOf(const std::string& path) {
 
 ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlLookup& lookUpMtl) {
     if (const auto format = otherFileFormat(text))
-        throw SceneError(fileName, 0, otherFormatMessage(*format, fileName, "an OBJ model"));
+        throw SceneError(fileName, 0,
+                         otherFormatMessage(*format, fileName, ExpectedFile::ObjModel));
     if (const auto reason = scene_lexer::binaryReason(text, scene_lexer::TextEncoding::AnyBytes))
         throw SceneError(fileName, 0, "not an OBJ file: it is binary (" + *reason + ")");
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3); // UTF-8 byte-order mark

@@ -168,7 +168,7 @@ Scene parseScene(std::string_view text, const std::string& fileName,
                  const SceneParseOptions& options) {
     if (text.empty()) throw SceneError(fileName, 0, "the file is empty");
     if (const auto format = otherFileFormat(text))
-        throw SceneError(fileName, 0, otherFormatMessage(*format, fileName, "a scene file"));
+        throw SceneError(fileName, 0, otherFormatMessage(*format, fileName, ExpectedFile::Scene));
     if (const auto reason = scene_lexer::binaryReason(text))
         throw SceneError(fileName, 0, "the file is binary (" + *reason + ")");
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3); // UTF-8 byte-order mark

@@ -16,6 +16,7 @@
 #include <cstring>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace {
 
@@ -41,6 +42,12 @@ std::string sceneError(const std::string& text) {
     return "no error";
 }
 
+// The name of what otherFileFormat finds, or nothing.
+std::optional<std::string> formatOf(std::string_view text) {
+    const std::optional<OtherFormat> format = otherFileFormat(text);
+    return format ? std::optional(formatName(*format)) : std::nullopt;
+}
+
 std::string binaryStl(std::uint32_t triangles) {
     std::string data(80, ' ');
     data.append(reinterpret_cast<const char*>(&triangles), 4);
@@ -51,26 +58,26 @@ std::string binaryStl(std::uint32_t triangles) {
 } // namespace
 
 TEST(ModelInput, OtherFormatsAreNamedByTheirFirstBytes) {
-    EXPECT_EQ(otherFileFormat("ply\nformat ascii 1.0\n"), "a PLY model");
-    EXPECT_EQ(otherFileFormat("ply\r\nformat binary_little_endian 1.0\r\n"), "a PLY model");
-    EXPECT_EQ(otherFileFormat("solid cube\n  facet normal 0 0 1\n"), "an STL model");
-    EXPECT_EQ(otherFileFormat(binaryStl(3)), "an STL model");
-    EXPECT_EQ(otherFileFormat("glTF\x02\0\0\0"s), "a binary glTF model (.glb)");
-    EXPECT_EQ(otherFileFormat("{\n  \"asset\": {\"version\": \"2.0\"}\n}"), "a glTF model");
-    EXPECT_EQ(otherFileFormat("\xFF\xFE#\0 \0"s), "UTF-16 text");
-    EXPECT_EQ(otherFileFormat("v\0 \0"
-                              "0\0 \0"s),
+    EXPECT_EQ(formatOf("ply\nformat ascii 1.0\n"), "a PLY model");
+    EXPECT_EQ(formatOf("ply\r\nformat binary_little_endian 1.0\r\n"), "a PLY model");
+    EXPECT_EQ(formatOf("solid cube\n  facet normal 0 0 1\n"), "an STL model");
+    EXPECT_EQ(formatOf(binaryStl(3)), "an STL model");
+    EXPECT_EQ(formatOf("glTF\x02\0\0\0"s), "a binary glTF model (.glb)");
+    EXPECT_EQ(formatOf("{\n  \"asset\": {\"version\": \"2.0\"}\n}"), "a glTF model");
+    EXPECT_EQ(formatOf("\xFF\xFE#\0 \0"s), "UTF-16 text");
+    EXPECT_EQ(formatOf("v\0 \0"
+                       "0\0 \0"s),
               "UTF-16 text"); // little-endian, no mark
-    EXPECT_EQ(otherFileFormat("\0v\0 \0"
-                              "0\0 "s),
+    EXPECT_EQ(formatOf("\0v\0 \0"
+                       "0\0 "s),
               "UTF-16 text"); // big-endian, no mark
     // What is not one of them: the project's own formats and other bytes.
-    EXPECT_EQ(otherFileFormat("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), std::nullopt);
-    EXPECT_EQ(otherFileFormat("1\namb: 0 0 0\nlight\npos: 0 0 0\ncol: 1 1 1\n"), std::nullopt);
-    EXPECT_EQ(otherFileFormat("solid as a rock\n"), std::nullopt); // no facet: not STL
-    EXPECT_EQ(otherFileFormat(binaryStl(3) + "x"), std::nullopt);  // the size does not add up
-    EXPECT_EQ(otherFileFormat("2\na\0b"s), std::nullopt);          // binary, said so elsewhere
-    EXPECT_EQ(otherFileFormat(""), std::nullopt);
+    EXPECT_EQ(formatOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), std::nullopt);
+    EXPECT_EQ(formatOf("1\namb: 0 0 0\nlight\npos: 0 0 0\ncol: 1 1 1\n"), std::nullopt);
+    EXPECT_EQ(formatOf("solid as a rock\n"), std::nullopt); // no facet: not STL
+    EXPECT_EQ(formatOf(binaryStl(3) + "x"), std::nullopt);  // the size does not add up
+    EXPECT_EQ(formatOf("2\na\0b"s), std::nullopt);          // binary, said so elsewhere
+    EXPECT_EQ(formatOf(""), std::nullopt);
 }
 
 TEST(ModelInput, AnObjOrSceneFileOfAnotherFormatSaysWhatItIs) {
