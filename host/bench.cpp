@@ -72,7 +72,7 @@ std::chrono::steady_clock::time_point processStartTime() {
                      std::chrono::duration<double>(age));
 }
 
-std::string runBenchmark(const Context& context, const Renderer& renderer, HeadlessTarget& target,
+std::string runBenchmark(const Context& context, Renderer& renderer, HeadlessTarget& target,
                          const Options& options, const StartupTimes& startup) {
     renderHeadlessFrame(target, context, renderer);
     double startupMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
@@ -83,12 +83,14 @@ std::string runBenchmark(const Context& context, const Renderer& renderer, Headl
 
     std::vector<double> wallMs, gpuMs;
     std::uint32_t submissions = 0;
+    FrameTiming last;
     const double cpuStart = processCpuMilliseconds();
     for (std::uint32_t frame = 0; frame < options.benchFrames; ++frame) {
         FrameTiming timing = renderHeadlessFrame(target, context, renderer);
         wallMs.push_back(timing.wallMs);
         gpuMs.push_back(timing.gpuMs);
         submissions = timing.submissions;
+        last = timing;
     }
     const double cpuMsPerFrame = (processCpuMilliseconds() - cpuStart) / options.benchFrames;
     const RenderSettings& settings = renderer.settings;
@@ -125,6 +127,10 @@ std::string runBenchmark(const Context& context, const Renderer& renderer, Headl
          << ", \"texel_reads\": " << (renderer.specialization.texelReads ? "true" : "false")
          << ", \"baked_spheres\": " << (renderer.specialization.bakedSpheres ? "true" : "false")
          << ", \"primary_rays_per_second\": "
-         << jsonNumber(pixels * settings.samplesPerPixel / (wallMedian * 1e-3)) << "}";
+         << jsonNumber(pixels * settings.samplesPerPixel / (wallMedian * 1e-3));
+    if (settings.countWork)
+        json << ", \"node_visits\": " << last.nodeVisits
+             << ", \"leaf_primitive_tests\": " << last.leafPrimitiveTests;
+    json << "}";
     return json.str();
 }

@@ -23,5 +23,5 @@ struct StartupTimes {
 // JSON object of docs/performance.md ("--bench") with parse_ms, per-frame submissions, the
 // process's CPU time per timed frame (cpu_ms_per_frame: the trace's cost on a CPU driver, robust to
 // other load) and the kernel choices added.
-std::string runBenchmark(const Context& context, const Renderer& renderer, HeadlessTarget& target,
+std::string runBenchmark(const Context& context, Renderer& renderer, HeadlessTarget& target,
                          const Options& options, const StartupTimes& startup);

@@ -104,6 +104,7 @@ bool intersectLeaf(Ray ray, ShearedRay sheared, uint leaf, bool anyHitMode, inou
         uint i = first;
         if (i < end) { // do-while: see traverseBvh
             do {
+                if (countWork) ++leafPrimitiveTests;
                 if (!intersectSphere(ray, fetchSphere(i), limit, t)) continue;
                 if (anyHitMode) return true;
                 if (t < hit.t || hit.kind == HIT_TRIANGLE ||
@@ -118,6 +119,7 @@ bool intersectLeaf(Ray ray, ShearedRay sheared, uint leaf, bool anyHitMode, inou
         uint i = first;
         if (i < end) {
             do {
+                if (countWork) ++leafPrimitiveTests;
                 if (!intersectTriangle(ray, sheared, i, limit, t, barycentric)) continue;
                 if (anyHitMode) return true;
                 if (t < hit.t || (hit.kind == HIT_TRIANGLE && i < hit.index)) {
@@ -185,6 +187,7 @@ bool traverseBvh(Ray ray, bool anyHitMode, inout Hit hit) {
     for (;;) {
         if ((child & BVH_LEAF) == 0u) {
             do {
+                if (countWork) ++nodeVisits;
                 GpuBvhNode node = fetchBvhNode(child);
                 real leftEntry, rightEntry;
                 bool hitLeft = hitBox(slabRay, rvec3(node.leftMinAndRef.xyz),

@@ -66,7 +66,10 @@ using uint = std::uint32_t;
 // The pixel story (docs/pixel_story.md): one GpuPixelStory, written only by the recording
 // kernel (SPEC_RECORD_PIXEL); a host-visible buffer the host reads back.
 #define BINDING_PIXEL_STORY 18
-#define BINDING_COUNT 19
+// What the kernel reports about its own run: one GpuKernelStatus, host-visible, set to zero
+// by the host before a submission and read after it.
+#define BINDING_KERNEL_STATUS 19
+#define BINDING_COUNT 20
 
 // Specialization constant ids (host/render/trace_pipeline.h, TraceSpecialization): bool unless
 // marked uint.
@@ -96,6 +99,9 @@ using uint = std::uint32_t;
 #define SPEC_FLOAT_OUTPUT 14
 // uint: the entries of the traversal stack, the hierarchy's depth (1 to BVH_STACK_SIZE).
 #define SPEC_STACK_DEPTH 15
+// bool: count the hierarchy's work into GpuKernelStatus (--count-work, hidden): a measure of
+// a kernel change that no timing noise moves.
+#define SPEC_COUNT_WORK 16
 // The most spheres baked in: the closest-hit loop over them is unrolled, one test each.
 #define MAX_BAKED_SPHERES 15u
 #define RAY_OFFSET_FIXED 0u       // 1e-4 along the normal
@@ -204,6 +210,23 @@ struct GpuStoryBounce {
     vec4 throughput;       // rgb: this bounce's weight in the sample, the product of earlier ks
     vec4 color;            // rgb: the sample's colour so far, this bounce's share included
     GpuStoryLight lights[MAX_STORY_LIGHTS];
+};
+
+// The kernel's report on a submission (BINDING_KERNEL_STATUS).
+// cutShortInvocations: invocations whose loops were ended early by the driver, not by the
+// trace. Mesa's CPU driver (llvmpipe, lavapipe) allows every invocation 65535 loop
+// iterations in all, counted over all of its loops together; past that each loop stops at
+// its next test and the pixel's value is wrong (samples lost, a traversal cut off). The
+// kernel notices (trace.comp, main) and the host then traces fewer samples per dispatch
+// (host/render/sample_passes.h). 16 bytes.
+// nodeVisits and leafPrimitiveTests (with SPEC_COUNT_WORK only): the hierarchy's interior
+// nodes visited (two boxes tested each) and the primitives tested in its leaves, summed over
+// the submission's invocations, modulo 2^32 (small images stay far below).
+struct GpuKernelStatus {
+    uint cutShortInvocations;
+    uint nodeVisits;
+    uint leafPrimitiveTests;
+    uint unused;
 };
 
 // The whole story of one pixel: its sample 0's tree and the pixel's final value.

@@ -47,6 +47,10 @@ layout(constant_id = SPEC_STACK_DEPTH) const uint stackDepth = BVH_STACK_SIZE;
 layout(constant_id = SPEC_RECORD_PIXEL) const bool recordPixel = false;
 // -o out.pfm|out.exr: each pixel's average also goes to accumulation[] as floats.
 layout(constant_id = SPEC_FLOAT_OUTPUT) const bool floatOutput = false;
+// --count-work (hidden): the hierarchy's work is counted into `status` (GpuKernelStatus).
+layout(constant_id = SPEC_COUNT_WORK) const bool countWork = false;
+uint nodeVisits = 0u;         // this invocation's, with countWork (bvh.glsl)
+uint leafPrimitiveTests = 0u; // likewise
 
 // Camera, counts, image size, samples and depth for this dispatch (see GpuFrameParams).
 layout(push_constant) uniform FrameParamsBlock {
@@ -103,6 +107,11 @@ layout(set = 0, binding = BINDING_BVH_NODES, std430) readonly buffer BvhNodeBuff
 // when tracing in one pass.
 layout(set = 0, binding = BINDING_ACCUMULATION, std430) buffer AccumulationBuffer {
     vec4 accumulation[];
+};
+
+// The kernel's report on its own run (GpuKernelStatus); the host reads it back.
+layout(set = 0, binding = BINDING_KERNEL_STATUS, std430) buffer KernelStatusBuffer {
+    GpuKernelStatus status;
 };
 
 // What the recording kernel computed for one pixel (pixel_story.glsl); the host reads it back.
@@ -194,10 +203,11 @@ void main() {
     // The --pixel kernel is dispatched with its pixel first: only that invocation records.
     if (recordPixel && any(notEqual(pixel, params.dispatch.xy))) return;
 
-    // Samples first..end-1 of n. One pass (dispatch.w == 0, headless) sums all n here; the
-    // window's progressive view adds dispatch.w of them per dispatch to the running sum in
-    // accumulation[], so after the last one it holds the same floats, added in the same
-    // order, as the one-pass sum: the final image is the headless one, bit for bit.
+    // Samples first..end-1 of n. One pass (dispatch.w == 0) sums all n here; otherwise
+    // (the window's progressive view, and headless frames split into sample passes) each
+    // dispatch adds dispatch.w of them to the running sum in accumulation[], so after the
+    // last one it holds the same floats, added in the same order, as the one-pass sum: the
+    // image is the one-pass image, bit for bit, however the samples were split.
     uint samples = max(params.image.z, 1u);
     bool progressive = params.dispatch.w != 0u;
     uint first = progressive ? params.dispatch.z : 0u;
@@ -205,14 +215,23 @@ void main() {
     uint slot = pixel.y * params.image.x + pixel.x;
     vec3 sum = vec3(0.0);
     if (progressive && first != 0u) sum = accumulation[slot].rgb;
+    // One closing pass more than the samples, which traces nothing: the loop then leaves
+    // through its own test only if every earlier test passed. A driver that ends loops early
+    // (llvmpipe's 65535 loop iterations per invocation, GpuKernelStatus) ends this one too,
+    // before s reaches end + 1, and the invocation reports itself cut short.
     uint s = first;
-    if (s < end) { // do-while: see traverseBvh (bvh.glsl)
-        do {
+    do {
+        if (s < end) {
             storyStartSample(s, sampleOffset(pixel, s, samples));
             sum +=
                 clamp(storySampleColor(traceRay(cameraRay(pixel, sampleOffset(pixel, s, samples)))),
                       0.0, 1.0);
-        } while (++s < end);
+        }
+    } while (++s <= end);
+    if (s != end + 1u) atomicAdd(status.cutShortInvocations, 1u);
+    if (countWork) {
+        atomicAdd(status.nodeVisits, nodeVisits);
+        atomicAdd(status.leafPrimitiveTests, leafPrimitiveTests);
     }
     if (recordPixel) { // the story, not the image
         storyPixel(sum / float(end), samples);
@@ -220,7 +239,8 @@ void main() {
     }
     if (progressive) accumulation[slot] = vec4(sum, 0.0);
     vec3 average = sum / float(end);
-    if (floatOutput) accumulation[slot] = vec4(average, 0.0); // headless one pass only
+    // Headless only, once the last pass has added its samples: the sum is not needed again.
+    if (floatOutput && end == samples) accumulation[slot] = vec4(average, 0.0);
     // floor(c * 255 + 0.5) here, stored as k / 255: the UNORM conversion then gives exactly k
     // whatever the driver's rounding (k / 255 * 255 rounds back to k for every k).
     vec3 level = floor(average * 255.0 + 0.5);

@@ -95,6 +95,12 @@ std::string commandLine(const Options& options) {
     addCount("--threads", options.cpuThreads, 0);
     addCount("--bench", options.benchFrames, 0);
     addCount("--bench-window", options.benchWindowFrames, 0);
+    if (!options.snapshotCounts.empty()) {
+        std::string counts;
+        for (std::uint32_t count : options.snapshotCounts)
+            counts += (counts.empty() ? "" : ",") + std::to_string(count);
+        add("--snapshots", counts);
+    }
     addCount("--region-size", options.regionSide, 0);
     if (options.pixelGiven)
         add("--pixel", std::to_string(options.pixel.x) + "," + std::to_string(options.pixel.y));
@@ -113,6 +119,7 @@ std::string commandLine(const Options& options) {
     addSwitch("--overlay", options.overlay);
     addSwitch("--redraw-continuously", options.redrawContinuously);
     addSwitch("--general-kernel", options.generalKernel);
+    addSwitch("--count-work", options.countWork);
     addSwitch("--storage-reads", options.storageReads);
     addSwitch("--help", options.showHelp);
     addSwitch("--version", options.showVersion);

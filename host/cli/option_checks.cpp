@@ -139,6 +139,19 @@ void checkOptionCombinations(Options& options, const OptionsGiven& given) {
          options.pixelGiven || options.forceWindow))
         throw UsageError("--check renders nothing and cannot be combined with -o, --bench, "
                          "--bench-window, --pixel or --window");
+    if (!options.snapshotCounts.empty()) {
+        if (!options.outputPath.empty() || options.benchFrames > 0 ||
+            options.benchWindowFrames > 0 || options.pixelGiven || options.checkOnly)
+            throw UsageError("--snapshots writes the window's screenshots and cannot be combined "
+                             "with -o, --bench, --bench-window, --pixel or --check");
+        if (!options.samplesGiven)
+            throw UsageError("--snapshots needs --spp N, the samples per pixel the window "
+                             "refines to");
+        if (options.snapshotCounts.back() > options.samplesPerPixel)
+            throw UsageError("--snapshots " + std::to_string(options.snapshotCounts.back()) +
+                             " lies beyond --spp " + std::to_string(options.samplesPerPixel) +
+                             ", where the window stops refining");
+    }
     if (options.benchWindowFrames > 0 && (!options.outputPath.empty() || options.benchFrames > 0))
         throw UsageError(
             "--bench-window cannot be combined with -o or --bench, which render headless");

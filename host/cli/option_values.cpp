@@ -1,5 +1,6 @@
 #include "cli/option_values.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <string_view>
@@ -99,6 +100,21 @@ glm::uvec4 parseCrop(const std::string& flag, const std::string& text) {
                          "whole numbers, W and H from 1), got '" +
                          text + "'");
     return {values[0], values[1], values[2], values[3]};
+}
+
+std::vector<std::uint32_t> parseSampleCounts(const std::string& flag, const std::string& text) {
+    std::vector<std::uint32_t> counts;
+    for (std::size_t n = 1; n <= 64 && counts.empty(); ++n)
+        counts = wholeNumbers(text, n, ',');
+    std::vector<std::uint32_t> sorted = counts;
+    std::sort(sorted.begin(), sorted.end());
+    if (counts.empty() || counts.front() == 0 || counts != sorted ||
+        std::adjacent_find(counts.begin(), counts.end()) != counts.end())
+        throw UsageError(flag +
+                         " expects sample counts K,K,... (up to 64 whole numbers from 1, "
+                         "increasing), got '" +
+                         text + "'");
+    return counts;
 }
 
 glm::uvec2 parseFrameRange(const std::string& flag, const std::string& text) {

@@ -27,6 +27,9 @@ glm::uvec4 parseCrop(const std::string& flag, const std::string& text);
 // --frames FIRST-LAST or --frames K: frame numbers from 0, inclusive.
 glm::uvec2 parseFrameRange(const std::string& flag, const std::string& text);
 
+// --snapshots K,K,...: 1 to 64 sample counts from 1, strictly increasing.
+std::vector<std::uint32_t> parseSampleCounts(const std::string& flag, const std::string& text);
+
 // One of names' values by its name; the message lists them ("grid, stratified or r2").
 template <typename T>
 T parseChoice(const std::string& flag, const std::string& text, const ChoiceNames<T>& names) {

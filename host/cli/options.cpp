@@ -138,6 +138,9 @@ std::string usageText() {
            "                        includes); the window recompiles when one is saved\n"
            "  --dump-shaders DIR    write the built-in shader sources to DIR and exit\n"
            "  --bench-window N      window: time N progressive frames, print frames per second\n"
+           "  --snapshots K,K,...   window: write a screenshot, as P does, when refinement "
+           "reaches\n"
+           "                        each of these samples per pixel (at most --spp N)\n"
            "  --up y|-y|z|-z|x|-x  an OBJ model's axis that is up (default y)\n"
            "  --crease DEG          an OBJ model's corners without normals average the faces\n"
            "                        around them within DEG degrees of their own (0: flat, 180:\n"
@@ -243,6 +246,8 @@ Options parseOptions(int argc, const char* const* argv) {
             if (options.dumpShadersTo.empty()) throw UsageError("--dump-shaders expects a folder");
         } else if (arg == "--bench-window") {
             options.benchWindowFrames = parseCount(arg, value(), 1, 100000);
+        } else if (arg == "--snapshots") {
+            options.snapshotCounts = parseSampleCounts(arg, value());
         } else if (arg == "--bench") {
             options.benchFrames = parseCount(arg, value(), 1, 100000);
         } else if (arg == "--device") {
@@ -271,6 +276,8 @@ Options parseOptions(int argc, const char* const* argv) {
             options.redrawContinuously = true;
         } else if (arg == "--general-kernel") {
             options.generalKernel = true;
+        } else if (arg == "--count-work") {
+            options.countWork = true;
         } else if (arg == "--storage-reads") {
             options.storageReads = true;
         } else if (arg == "--pixel") {

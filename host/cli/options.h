@@ -58,9 +58,13 @@ struct Options {
     std::filesystem::path shaderDirectory; // --shader-dir: compile (and watch) these sources
     std::filesystem::path dumpShadersTo;   // --dump-shaders DIR: write the embedded sources, exit
     std::uint32_t benchWindowFrames = 0;   // --bench-window N: time N progressive frames, exit
+    // --snapshots K,K,...: the window writes a screenshot, as P does, when refinement of the
+    // view it opens with reaches each of these sample counts (increasing, at most --spp).
+    std::vector<std::uint32_t> snapshotCounts;
     KernelChoices
         kernel; // --sampler, --seed, --precision, --sphere-test, --triangle-test, --offset
     bool generalKernel = false; // --general-kernel (hidden, for tools/kernel_costs)
+    bool countWork = false;     // --count-work (hidden): --bench reports the hierarchy's work
     bool storageReads = false;  // --storage-reads (hidden): the kernel's fallback read path
     // --pixel X,Y: print the pixel story of column X, row Y as JSON (docs/pixel_story.md);
     // headless, and alone (no PNG) without -o.

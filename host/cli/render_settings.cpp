@@ -18,6 +18,7 @@ RenderSettings renderSettingsFrom(const Options& options) {
     settings.camera = options.camera;
     settings.shaderDirectory = options.shaderDirectory;
     settings.generalKernel = options.generalKernel;
+    settings.countWork = options.countWork;
     settings.storageReads = options.storageReads;
     return settings;
 }

@@ -1,5 +1,6 @@
 #include "render/headless.h"
 
+#include "base/notes.h"
 #include "base/scope_guard.h"
 #include "gpu/vk_check.h"
 #include "render/interrupt.h"
@@ -107,8 +108,8 @@ void createHeadlessTarget(HeadlessTarget& target, const Context& context, const 
 // One submission per region, each waited for before the next is recorded: the time of
 // one sizes the next (host/render/region_planner.h), and the queue never holds more than one
 // region's work, so nothing else waits behind a long frame.
-FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context,
-                                const Renderer& renderer, ProgressMode progressMode) {
+FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context, Renderer& renderer,
+                                ProgressMode progressMode) {
     const TraceRegion area = tracedArea(target, renderer);
     Progress progress = startProgress(progressMode, area.width, area.height);
     const double totalPixels = double(area.width) * area.height;
@@ -120,35 +121,59 @@ FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context,
     beginFrame(target.planner, area.width, area.height);
     const Clock::time_point frameStart = Clock::now();
     TraceRegion region;
+    bool begun = false; // the output image is in VK_IMAGE_LAYOUT_GENERAL
     while (nextRegion(target.planner, region)) {
-        throwIfInterrupted(); // Ctrl-C: the last submission is done, nothing more is sent
-        VK_CHECK(vkResetCommandBuffer(target.commands, 0));
-        VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-        begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-        VK_CHECK(vkBeginCommandBuffer(target.commands, &begin));
-        if (timing.submissions == 0) recordTraceBegin(renderer, target.commands);
-        recordTraceRegion(renderer, target.commands,
-                          {area.x + region.x, area.y + region.y, region.width, region.height});
         const bool last = frameCovered(target.planner);
-        if (last) {
-            recordTraceEnd(renderer, target.commands);
-            // The last submission of a frame also copies the image to the readback buffer.
-            recordCopyToHost(target.commands, renderer.outputImage, target.readbackBuffer);
-            if (renderer.settings.floatOutput)
-                recordFloatCopyToHost(target.commands, renderer.accumulation,
-                                      target.floatReadbackBuffer);
+        double milliseconds = 0.0;
+        // A region whose invocations the driver cut short is traced again, in passes of
+        // fewer samples, until none is or a pass is one sample.
+        for (;;) {
+            throwIfInterrupted(); // Ctrl-C: the last submission is done, nothing more is sent
+            VK_CHECK(vkResetCommandBuffer(target.commands, 0));
+            VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+            begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+            VK_CHECK(vkBeginCommandBuffer(target.commands, &begin));
+            if (!begun) recordTraceBegin(renderer, target.commands);
+            recordTraceRegion(renderer, target.commands,
+                              {area.x + region.x, area.y + region.y, region.width, region.height});
+            if (last) {
+                recordTraceEnd(renderer, target.commands);
+                // The last submission of a frame also copies the image to the readback buffer.
+                recordCopyToHost(target.commands, renderer.outputImage, target.readbackBuffer);
+                if (renderer.settings.floatOutput)
+                    recordFloatCopyToHost(target.commands, renderer.accumulation,
+                                          target.floatReadbackBuffer);
+            }
+            VK_CHECK(vkEndCommandBuffer(target.commands));
+            resetKernelStatus(renderer);
+            milliseconds += submitAndTime(target, context);
+            begun = true;
+            ++timing.submissions;
+            const std::uint32_t cutShort = cutShortInvocations(renderer);
+            if (cutShort == 0) {
+                const gpu::GpuKernelStatus status = kernelStatus(renderer);
+                timing.nodeVisits += status.nodeVisits;
+                timing.leafPrimitiveTests += status.leafPrimitiveTests;
+                break;
+            }
+            if (!traceFewerSamplesPerPass(renderer, context, renderer.settings.samplesPerPixel)) {
+                timing.cutShortInvocations += cutShort;
+                break;
+            }
         }
-        VK_CHECK(vkEndCommandBuffer(target.commands));
-
-        const double milliseconds = submitAndTime(target, context);
         regionTraced(target.planner, region, milliseconds);
-        ++timing.submissions;
         timing.longestSubmissionMs = std::max(timing.longestSubmissionMs, milliseconds);
         if (renderer.timestampPool) timing.gpuMs += lastTraceGpuMilliseconds(renderer, context);
         pixelsDone += double(region.width) * region.height;
         updateProgress(progress, pixelsDone / totalPixels);
     }
     timing.wallMs = millisecondsSince(frameStart);
+    if (timing.cutShortInvocations > 0)
+        note("warning: %u pixels may be wrong: the CPU driver ends a shader invocation's "
+             "loops after 65535 iterations in all, and one sample of these pixels needs more "
+             "(more bounces, lights or primitives tested than it allows; --accel bvh tests "
+             "fewer)\n",
+             timing.cutShortInvocations);
     finishProgress(progress, timing.submissions, timing.longestSubmissionMs);
     return timing;
 }

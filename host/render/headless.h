@@ -28,6 +28,12 @@ struct FrameTiming {
     double gpuMs = 0;  // sum of the timestamp intervals of the regions; < 0 without timestamps
     std::uint32_t submissions = 0;
     double longestSubmissionMs = 0; // submit to fence
+    // Invocations the driver cut short even at one sample per pass: their pixels may be wrong
+    // (a vector of invocations is cut short together).
+    std::uint32_t cutShortInvocations = 0;
+    // With RenderSettings::countWork: the hierarchy's work over the frame's last traces of
+    // each region (GpuKernelStatus).
+    std::uint64_t nodeVisits = 0, leafPrimitiveTests = 0;
 };
 
 // fixedRegionSide > 0 (--region-size) makes every region that square; 0 adapts the regions
@@ -36,8 +42,10 @@ void createHeadlessTarget(HeadlessTarget& target, const Context& context, const 
                           std::uint32_t fixedRegionSide = 0);
 
 // Traces one frame, region by region, and copies it to the readback buffer.
-FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context,
-                                const Renderer& renderer,
+// Regions whose invocations the driver cut short are traced again with fewer samples per
+// pass (traceFewerSamplesPerPass), which the renderer keeps for later frames; what is still
+// cut short at one sample per pass is counted, and a warning says so.
+FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context, Renderer& renderer,
                                 ProgressMode progress = ProgressMode::Off);
 
 // The last rendered frame as an image (the crop only, with one).

@@ -11,6 +11,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -55,7 +56,7 @@ void createDescriptors(Renderer& renderer, const Context& context) {
     std::vector<VkWriteDescriptorSet> writes;
     for (std::uint32_t binding = 0; binding < BINDING_COUNT; ++binding) {
         if (binding == BINDING_OUTPUT_IMAGE || binding == BINDING_ACCUMULATION ||
-            binding == BINDING_PIXEL_STORY)
+            binding == BINDING_PIXEL_STORY || binding == BINDING_KERNEL_STATUS)
             continue;
         VkWriteDescriptorSet write = descriptorWrite(renderer, binding);
         if (binding >= BINDING_FIRST_TEXEL_BUFFER)
@@ -70,6 +71,10 @@ void createDescriptors(Renderer& renderer, const Context& context) {
     VkWriteDescriptorSet storyWrite = descriptorWrite(renderer, BINDING_PIXEL_STORY);
     storyWrite.pBufferInfo = &storyInfo;
     writes.push_back(storyWrite);
+    const VkDescriptorBufferInfo statusInfo{renderer.status.buffer, 0, VK_WHOLE_SIZE};
+    VkWriteDescriptorSet statusWrite = descriptorWrite(renderer, BINDING_KERNEL_STATUS);
+    statusWrite.pBufferInfo = &statusInfo;
+    writes.push_back(statusWrite);
     vkUpdateDescriptorSets(context.device, static_cast<std::uint32_t>(writes.size()), writes.data(),
                            0, nullptr);
 }
@@ -152,6 +157,7 @@ TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderS
             std::clamp<std::uint32_t>(packed.hierarchy.depth, 1, BVH_STACK_SIZE);
     specialization.texelReads = !settings.storageReads;
     specialization.floatOutput = settings.floatOutput;
+    specialization.countWork = settings.countWork;
     applyKernelChoices(specialization, settings.kernel);
     return specialization;
 }
@@ -191,6 +197,9 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
              double(renderer.scene.bytes) / double(primitives));
     renderer.pixelStory =
         createHostBuffer(context, sizeof(gpu::GpuPixelStory), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    renderer.status =
+        createHostBuffer(context, sizeof(gpu::GpuKernelStatus), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    resetKernelStatus(renderer);
     createDescriptors(renderer, context);
     if (context.timestampsSupported) {
         VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
@@ -200,6 +209,53 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
     }
     resizeOutput(renderer, context, settings.width, settings.height);
 }
+
+namespace {
+
+// A running sum per pixel is needed when the samples are added over several dispatches:
+// the window's progressive view, or a headless frame split into passes; float output keeps
+// its averages there too.
+bool needsPerPixelSum(const Renderer& renderer) {
+    const RenderSettings& settings = renderer.settings;
+    return settings.progressive || settings.floatOutput ||
+           (renderer.samplesPerPass != 0 && renderer.samplesPerPass < settings.samplesPerPixel);
+}
+
+// The accumulation buffer at the output image's size (a vec4 per pixel when the renderer
+// needs a running sum, else one), bound to the kernel.
+void createAccumulation(Renderer& renderer, const Context& context) {
+    // Its contents never matter: the first dispatch of a progressive run or of a split frame
+    // writes before it reads, float output writes every pixel, and other one-pass dispatches
+    // never touch it.
+    destroyBuffer(context, renderer.accumulation);
+    const bool perPixel = needsPerPixelSum(renderer);
+    const VkDeviceSize accumulationBytes = perPixel
+                                               ? VkDeviceSize(renderer.outputImage.width) *
+                                                     renderer.outputImage.height * sizeof(glm::vec4)
+                                               : sizeof(glm::vec4);
+    const VkDeviceSize storageRange = context.properties.limits.maxStorageBufferRange;
+    if (perPixel && accumulationBytes > storageRange)
+        throw std::runtime_error(
+            "a " + std::to_string(renderer.outputImage.width) + "x" +
+            std::to_string(renderer.outputImage.height) +
+            (renderer.settings.floatOutput ? " float image" : " image traced in sample passes") +
+            " needs " + std::to_string(accumulationBytes >> 20) + " MiB, more than this device's " +
+            "maxStorageBufferRange of " + std::to_string(storageRange >> 20) + " MiB (" +
+            context.properties.deviceName + "); " +
+            (renderer.settings.floatOutput ? "write a PNG or a smaller image"
+                                           : "render a smaller image, or in --crop regions"));
+    const std::vector<std::uint8_t> zeros(accumulationBytes, 0);
+    // TRANSFER_SRC: headless float output copies it to a host buffer.
+    renderer.accumulation =
+        createDeviceBuffer(context, zeros.data(), accumulationBytes,
+                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    VkDescriptorBufferInfo bufferInfo{renderer.accumulation.buffer, 0, VK_WHOLE_SIZE};
+    VkWriteDescriptorSet bufferWrite = descriptorWrite(renderer, BINDING_ACCUMULATION);
+    bufferWrite.pBufferInfo = &bufferInfo;
+    vkUpdateDescriptorSets(context.device, 1, &bufferWrite, 0, nullptr);
+}
+
+} // namespace
 
 void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t width,
                   std::uint32_t height) {
@@ -217,28 +273,7 @@ void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t widt
     imageWrite.pImageInfo = &imageInfo;
     vkUpdateDescriptorSets(context.device, 1, &imageWrite, 0, nullptr);
 
-    // Its contents never matter: the first dispatch of a progressive run writes before
-    // it reads, float output writes every pixel, and other one-pass dispatches never touch it.
-    destroyBuffer(context, renderer.accumulation);
-    const bool perPixel = renderer.settings.progressive || renderer.settings.floatOutput;
-    const VkDeviceSize accumulationBytes =
-        perPixel ? VkDeviceSize(width) * height * sizeof(glm::vec4) : sizeof(glm::vec4);
-    const VkDeviceSize storageRange = context.properties.limits.maxStorageBufferRange;
-    if (renderer.settings.floatOutput && accumulationBytes > storageRange)
-        throw std::runtime_error(
-            "a " + std::to_string(width) + "x" + std::to_string(height) + " float image needs " +
-            std::to_string(accumulationBytes >> 20) + " MiB, more than this device's " +
-            "maxStorageBufferRange of " + std::to_string(storageRange >> 20) + " MiB (" +
-            context.properties.deviceName + "); write a PNG or a smaller image");
-    const std::vector<std::uint8_t> zeros(accumulationBytes, 0);
-    // TRANSFER_SRC: headless float output copies it to a host buffer.
-    renderer.accumulation =
-        createDeviceBuffer(context, zeros.data(), accumulationBytes,
-                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-    VkDescriptorBufferInfo bufferInfo{renderer.accumulation.buffer, 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet bufferWrite = descriptorWrite(renderer, BINDING_ACCUMULATION);
-    bufferWrite.pBufferInfo = &bufferInfo;
-    vkUpdateDescriptorSets(context.device, 1, &bufferWrite, 0, nullptr);
+    createAccumulation(renderer, context);
 }
 
 void setCamera(Renderer& renderer, const CameraPose& camera) {
@@ -265,15 +300,9 @@ void recordTraceBegin(const Renderer& renderer, VkCommandBuffer commands) {
 
 namespace {
 
-void recordRegion(const Renderer& renderer, VkCommandBuffer commands, const TraceRegion& region,
-                  SampleRange samples) {
-    if (renderer.timestampPool) {
-        vkCmdResetQueryPool(commands, renderer.timestampPool, 0, 2);
-        vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, renderer.timestampPool, 0);
-    }
-    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline.pipeline);
-    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline.layout, 0,
-                            1, &renderer.descriptorSet, 0, nullptr);
+// The dispatches of one pass over the region: samples (count 0: all, in one pass).
+void recordPass(const Renderer& renderer, VkCommandBuffer commands, const TraceRegion& region,
+                SampleRange samples) {
     // Regions write disjoint pixels, so the dispatches need no barrier between them.
     const std::uint32_t right = region.x + region.width, bottom = region.y + region.height;
     for (std::uint32_t dispatchY = region.y; dispatchY < bottom; dispatchY += kMaxDispatchSide) {
@@ -288,9 +317,51 @@ void recordRegion(const Renderer& renderer, VkCommandBuffer commands, const Trac
             vkCmdDispatch(commands, columns, rows, 1);
         }
     }
+}
+
+// The running sum written by one pass is read and written by the next.
+void recordSumBarrier(VkCommandBuffer commands) {
+    VkMemoryBarrier sum{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    sum.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    sum.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &sum, 0, nullptr, 0, nullptr);
+}
+
+// Samples (count 0: all of the frame's) over the region, in passes of at most
+// renderer.samplesPerPass samples each.
+void recordRegion(const Renderer& renderer, VkCommandBuffer commands, const TraceRegion& region,
+                  SampleRange samples) {
+    if (renderer.timestampPool) {
+        vkCmdResetQueryPool(commands, renderer.timestampPool, 0, 2);
+        vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, renderer.timestampPool, 0);
+    }
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline.pipeline);
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline.layout, 0,
+                            1, &renderer.descriptorSet, 0, nullptr);
+    const std::uint32_t perPass = renderer.samplesPerPass;
+    const std::uint32_t all = std::max(renderer.settings.samplesPerPixel, 1u);
+    if (samples.count == 0 && (perPass == 0 || perPass >= all)) {
+        recordPass(renderer, commands, region, {}); // the whole frame in one pass
+    } else {
+        if (samples.count == 0) samples = {0, all};
+        const std::uint32_t end = samples.first + samples.count;
+        for (std::uint32_t first = samples.first; first < end;) {
+            const std::uint32_t count = perPass == 0 ? end - first : std::min(perPass, end - first);
+            if (first != samples.first) recordSumBarrier(commands);
+            recordPass(renderer, commands, region, {first, count});
+            first += count;
+        }
+    }
     if (renderer.timestampPool)
         vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, renderer.timestampPool,
                             1);
+    // The kernel's report (GpuKernelStatus), to the host's read after the fence.
+    VkMemoryBarrier report{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    report.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    report.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                         0, 1, &report, 0, nullptr, 0, nullptr);
 }
 
 } // namespace
@@ -311,18 +382,41 @@ void recordTraceEnd(const Renderer& renderer, VkCommandBuffer commands) {
 
 void recordTrace(const Renderer& renderer, VkCommandBuffer commands, SampleRange samples) {
     recordTraceBegin(renderer, commands);
-    if (samples.count > 0) {
-        // The running sum written by the previous frame's dispatches is read by this one's.
-        VkMemoryBarrier sum{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-        sum.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-        sum.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-        vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                             VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &sum, 0, nullptr, 0,
-                             nullptr);
-    }
+    // The running sum written by the previous frame's dispatches is read by this one's.
+    if (samples.count > 0) recordSumBarrier(commands);
     recordRegion(renderer, commands,
                  {0, 0, renderer.outputImage.width, renderer.outputImage.height}, samples);
     recordTraceEnd(renderer, commands);
+}
+
+void resetKernelStatus(const Renderer& renderer) {
+    std::memset(renderer.status.mapped, 0, sizeof(gpu::GpuKernelStatus));
+}
+
+gpu::GpuKernelStatus kernelStatus(const Renderer& renderer) {
+    gpu::GpuKernelStatus status;
+    std::memcpy(&status, renderer.status.mapped, sizeof(status));
+    return status;
+}
+
+std::uint32_t cutShortInvocations(const Renderer& renderer) {
+    return kernelStatus(renderer).cutShortInvocations;
+}
+
+bool traceFewerSamplesPerPass(Renderer& renderer, const Context& context,
+                              std::uint32_t samplesInFrame) {
+    const std::uint32_t now = renderer.samplesPerPass == 0
+                                  ? std::max(renderer.settings.samplesPerPixel, samplesInFrame)
+                                  : renderer.samplesPerPass;
+    if (now <= 1) return false;
+    const bool hadSum = needsPerPixelSum(renderer);
+    renderer.samplesPerPass = std::min(now, samplesInFrame) / 2;
+    renderer.samplesPerPass = std::max(renderer.samplesPerPass, 1u);
+    if (!hadSum && needsPerPixelSum(renderer)) {
+        VK_CHECK(vkDeviceWaitIdle(context.device));
+        createAccumulation(renderer, context);
+    }
+    return true;
 }
 
 void recordPixelStoryTrace(const Renderer& renderer, VkCommandBuffer commands, std::uint32_t x,
@@ -353,6 +447,7 @@ void destroyRenderer(Renderer& renderer, const Context& context) {
     destroyImage(context, renderer.outputImage);
     destroyBuffer(context, renderer.accumulation);
     destroyBuffer(context, renderer.pixelStory);
+    destroyBuffer(context, renderer.status);
     destroyTracePipeline(context, renderer.storyPipeline);
     if (renderer.timestampPool) vkDestroyQueryPool(context.device, renderer.timestampPool, nullptr);
     if (renderer.descriptorPool)

@@ -42,6 +42,9 @@ struct RenderSettings {
     // --storage-reads (hidden): read the scene through the storage buffers, as for an array
     // beyond the device's maxTexelBufferElements, so that the tests reach that path. Same image.
     bool storageReads = false;
+    // --count-work (hidden): the kernel counts the hierarchy's node visits and leaf
+    // primitive tests (FrameTiming, --bench's JSON): a measure of work without timing noise.
+    bool countWork = false;
 };
 
 // The samples one dispatch adds (GpuFrameParams.dispatch.zw): count 0 traces all of
@@ -73,6 +76,12 @@ struct Renderer {
     // VK_ACCESS_SHADER_READ/WRITE between dispatches, or the float averages
     // (settings.floatOutput); one vec4 when neither.
     Buffer accumulation;
+    // The samples one dispatch traces at most; 0: all of them in one pass. Lowered by
+    // traceFewerSamplesPerPass when the kernel reports invocations cut short.
+    std::uint32_t samplesPerPass = 0;
+    // BINDING_KERNEL_STATUS's host-visible GpuKernelStatus (resetKernelStatus before a
+    // submission, cutShortInvocations after it).
+    Buffer status;
     VkQueryPool timestampPool = VK_NULL_HANDLE; // two timestamps around the trace
     RenderSettings settings;
     TraceSpecialization specialization; // what the kernel was compiled for (--bench reports it)
@@ -102,10 +111,25 @@ void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t widt
                   std::uint32_t height);
 
 // Records the whole frame's trace in one command buffer (the window): all samples, or
-// with samples.count > 0 the next ones of the progressive sum. Afterwards the output
+// with samples.count > 0 the next ones of the progressive sum, in passes of at most
+// renderer.samplesPerPass samples. Afterwards the output
 // image is ready to be read by a transfer command (copy or blit) in
 // VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL.
 void recordTrace(const Renderer& renderer, VkCommandBuffer commands, SampleRange samples = {});
+
+// The kernel's report: zeroed before a submission, read once its fence has signalled.
+void resetKernelStatus(const Renderer& renderer);
+// Invocations whose loops the driver ended early since the reset: their pixels are wrong
+// (GpuKernelStatus in shaders/shared.h).
+std::uint32_t cutShortInvocations(const Renderer& renderer);
+// The whole report, for the work counts of --count-work.
+gpu::GpuKernelStatus kernelStatus(const Renderer& renderer);
+
+// Halves the samples one dispatch traces (from all of them at first), so that an
+// invocation runs fewer loop iterations; the image stays the same bits. Gives the per-pixel
+// running sum room on the first split. False when a dispatch traces one sample already.
+bool traceFewerSamplesPerPass(Renderer& renderer, const Context& context,
+                              std::uint32_t samplesInFrame);
 
 // Points the camera elsewhere (the window's controls); takes effect at the next record.
 void setCamera(Renderer& renderer, const CameraPose& camera);
@@ -119,7 +143,8 @@ void setFieldOfView(Renderer& renderer, double degrees);
 
 // The same frame spread over several submissions (headless): recordTraceBegin in the
 // first command buffer, recordTraceRegion for each region, recordTraceEnd in the last.
-// The regions must cover the image; each pixel's value does not depend on them.
+// The regions must cover the image; each pixel's value does not depend on them. A region
+// traces its samples in passes of at most renderer.samplesPerPass.
 void recordTraceBegin(const Renderer& renderer, VkCommandBuffer commands);
 void recordTraceRegion(const Renderer& renderer, VkCommandBuffer commands,
                        const TraceRegion& region);

@@ -18,7 +18,7 @@
 #include <string>
 
 // Hashed as bytes for the pipeline cache's key: no padding may hide in it.
-static_assert(sizeof(TraceSpecialization) == 16 * sizeof(std::uint32_t));
+static_assert(sizeof(TraceSpecialization) == 17 * sizeof(std::uint32_t));
 
 VkDescriptorType bindingDescriptorType(std::uint32_t binding) {
     if (binding == BINDING_OUTPUT_IMAGE) return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
@@ -72,7 +72,8 @@ std::vector<VkSpecializationMapEntry> specializationMapEntries() {
             {SPEC_BAKED_LIGHT_COUNT, offsetof(S, bakedLightCount), sizeof(std::uint32_t)},
             {SPEC_RECORD_PIXEL, offsetof(S, recordPixel), sizeof(VkBool32)},
             {SPEC_FLOAT_OUTPUT, offsetof(S, floatOutput), sizeof(VkBool32)},
-            {SPEC_STACK_DEPTH, offsetof(S, stackDepth), sizeof(std::uint32_t)}};
+            {SPEC_STACK_DEPTH, offsetof(S, stackDepth), sizeof(std::uint32_t)},
+            {SPEC_COUNT_WORK, offsetof(S, countWork), sizeof(VkBool32)}};
 }
 
 // The constants' values by id, for specializeSpirv.

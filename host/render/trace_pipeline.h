@@ -34,6 +34,8 @@ struct TraceSpecialization {
     VkBool32 floatOutput = VK_FALSE; // averages also to BINDING_ACCUMULATION (-o .pfm/.exr)
     // The traversal stack's entries: the hierarchy's depth (shaders/bvh.glsl, traverseBvh).
     std::uint32_t stackDepth = BVH_STACK_SIZE;
+    // --count-work (hidden): the hierarchy's work counted into GpuKernelStatus.
+    VkBool32 countWork = VK_FALSE;
 };
 
 // What each binding of shaders/shared.h is: the output image, a storage buffer, or one of

@@ -161,9 +161,13 @@ void drawFrame(Viewer& viewer) {
         VK_CHECK(acquired); // suboptimal still acquired an image: use it
     VK_CHECK(vkResetFences(device, 1, &frame.done));
     SampleRange samples;
-    if (refining(viewer))
-        samples = {viewer.samplesDone,
-                   std::min(viewer.samplesPerFrame, viewer.sampleTarget - viewer.samplesDone)};
+    if (refining(viewer)) {
+        // A frame stops at the next --snapshots count, so that the count is shown exactly.
+        std::uint32_t stop = viewer.sampleTarget;
+        if (viewer.nextSnapshot < viewer.snapshotCounts.size())
+            stop = std::min(stop, viewer.snapshotCounts[viewer.nextSnapshot]);
+        samples = {viewer.samplesDone, std::min(viewer.samplesPerFrame, stop - viewer.samplesDone)};
+    }
     record(viewer, frame.commands, imageIndex, samples);
 
     VkSemaphore renderFinished = viewer.swapchain.renderFinished[imageIndex];
@@ -178,6 +182,7 @@ void drawFrame(Viewer& viewer) {
     submit.signalSemaphoreCount = 1;
     submit.pSignalSemaphores = &renderFinished;
     const Clock::time_point submitted = Clock::now();
+    resetKernelStatus(viewer.renderer);
     VK_CHECK(vkQueueSubmit(viewer.context.queue, 1, &submit, frame.done));
 
     VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
@@ -202,7 +207,26 @@ void drawFrame(Viewer& viewer) {
         VK_CHECK(vkWaitForFences(device, 1, &frame.done, VK_TRUE, UINT64_MAX));
         viewer.lastFrameMs =
             std::chrono::duration<double, std::milli>(Clock::now() - submitted).count();
+        if (cutShortInvocations(viewer.renderer) > 0 && !viewer.cutShortReported) {
+            // The driver ended some invocations' loops early (GpuKernelStatus): the sum is
+            // wrong. Fewer samples per dispatch, and the sum starts again.
+            if (traceFewerSamplesPerPass(viewer.renderer, viewer.context, samples.count)) {
+                restartRefinement(viewer);
+                viewer.presentNeeded = true;
+                return;
+            }
+            viewer.cutShortReported = true;
+            std::fprintf(stderr,
+                         "warning: some pixels are wrong: the CPU driver ends a shader "
+                         "invocation's loops after 65535 iterations in all, and one sample of "
+                         "them needs more\n");
+        }
         viewer.samplesDone += samples.count;
+        if (viewer.nextSnapshot < viewer.snapshotCounts.size() &&
+            viewer.samplesDone == viewer.snapshotCounts[viewer.nextSnapshot]) {
+            viewer.snapshotNow = true; // written after this frame, as P's screenshot is
+            ++viewer.nextSnapshot;
+        }
         viewer.lastFrameSamples = samples.count;
         adaptSamplesPerFrame(viewer, viewer.lastFrameMs);
         // One line per finished image (the tests wait for it), none while soaking.

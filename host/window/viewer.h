@@ -67,6 +67,9 @@ struct Viewer {
     std::uint32_t samplesPerFrame = 1;
     double lastFrameMs = 0.0;
     std::uint32_t lastFrameSamples = 0; // samples per pixel the last traced frame added
+    // The driver cut invocations short even at one sample per dispatch, and the warning
+    // has been printed (once per window).
+    bool cutShortReported = false;
     Clock::time_point refineStart = Clock::now();
 
     CameraPose camera;
@@ -83,7 +86,11 @@ struct Viewer {
     bool swapchainStale = true; // no usable swapchain yet, or OUT_OF_DATE/SUBOPTIMAL was reported
     bool presentNeeded = true;  // the window does not show the output image
     bool vsync = true;
-    bool snapshotNow = false;           // P: write what is shown, after this frame
+    bool snapshotNow = false; // P: write what is shown, after this frame
+    // --snapshots: the sample counts at which the first view's refinement writes a screenshot,
+    // and the index of the next one (the series ends when the view changes).
+    std::vector<std::uint32_t> snapshotCounts;
+    std::size_t nextSnapshot = 0;
     bool screenshotPending = false;     // Shift+P: write it once refinement is done
     bool screenshotViewChanged = false; // the camera moved since Shift+P (said once)
     // I: print the pixel story of the pixel at (storyX, storyY), window units, after the
@@ -105,8 +112,16 @@ inline bool refining(const Viewer& viewer) {
     return viewer.samplesDone < viewer.sampleTarget;
 }
 
-// Something the image depends on changed: the sum starts again.
+// Something the image depends on changed: the sum starts again. A --snapshots series under
+// way ends: it belongs to the view the window opened with.
 inline void restartRefinement(Viewer& viewer) {
+    if (viewer.samplesDone != 0 && viewer.nextSnapshot < viewer.snapshotCounts.size()) {
+        std::fprintf(stderr,
+                     "Snapshots: the view changed at %u samples per pixel; no more snapshots are "
+                     "written\n",
+                     viewer.samplesDone);
+        viewer.nextSnapshot = viewer.snapshotCounts.size();
+    }
     if (viewer.samplesDone != 0) viewer.refineStart = Clock::now();
     viewer.samplesDone = 0;
     viewer.samplesPerFrame = 1; // the first frame after a change comes quickly

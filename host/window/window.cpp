@@ -61,6 +61,7 @@ void open(Viewer& viewer, const Options& commandLine, const Scene& scene) {
         viewer.sampleTarget = std::max(viewer.sampleTarget, viewer.benchFrames + 1);
         viewer.vsync = false;
     }
+    viewer.snapshotCounts = options.snapshotCounts;
     viewer.overlay.shown = options.overlay;
     viewer.sceneWatch = watchPath(options.scenePath);
     if (!options.shaderDirectory.empty()) viewer.shaderWatch = watchPath(options.shaderDirectory);

@@ -329,14 +329,20 @@ TEST(CommandLine, ThreadsSetsTheCpuDriversWorkerCount) {
         int seen = -1;
         std::vector<std::string> args = {std::string(PROJECT_SCENES_DIR) + "/mesh.scene", "-o",
                                          (dir / "out.png").string()};
-        args.insert(args.end(), {"--width", "2048", "--height", "2048", "--spp", "4", "--threads",
+        // A render of minutes, ended by the signal below once the count has been read.
+        args.insert(args.end(), {"--width", "4096", "--height", "4096", "--spp", "16", "--threads",
                                  std::to_string(threads)});
         ProcessResult run =
             runRaytracerWhile(args, [&](pid_t pid, const std::filesystem::path& errPath) {
-                // Once the device is chosen and the first submission runs, the workers exist.
+                // The driver starts its workers with the device, which is made before the
+                // scene is uploaded; the count is read until it is the one asked for (the
+                // threads may take a moment to name themselves), for at most a minute.
                 waitForText(errPath, "Scene memory:");
-                std::this_thread::sleep_for(std::chrono::milliseconds(500));
-                seen = cpuDriverThreads(pid);
+                for (int tries = 0; tries < 3000; ++tries) {
+                    seen = cpuDriverThreads(pid);
+                    if (seen == threads) break;
+                    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+                }
                 kill(pid, SIGTERM);
             });
         EXPECT_EQ(seen, threads) << run.err;

@@ -37,8 +37,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <sstream>
+#include <utility>
 
 namespace {
 
@@ -325,40 +328,50 @@ std::string trianglesInAPlane(double height, int count) {
     return scene.text();
 }
 
-// One --bench run's CPU time per frame, on one lavapipe thread: the figure that a loaded
-// machine disturbs least (wall time also counts the waits for a busy core; a frame here
-// is a few milliseconds, which a load spike on a 2-core CI machine more than doubled).
-double cpuMsPerFrame(const std::filesystem::path& scene) {
-    ProcessResult bench = runRaytracer({scene.string(), "--bench", "5", "--width", "640",
-                                        "--height", "480", "--accel", "bvh", "--threads", "1"});
+// The hierarchy's work over one frame at 160x120 (--count-work: interior nodes visited and
+// leaf primitives tested, counted by the kernel): the same numbers on any machine at any load.
+struct HierarchyWork {
+    std::uint64_t nodeVisits = 0, leafPrimitiveTests = 0;
+};
+
+HierarchyWork hierarchyWork(const std::filesystem::path& scene) {
+    ProcessResult bench = runRaytracer({scene.string(), "--bench", "1", "--width", "160",
+                                        "--height", "120", "--accel", "bvh", "--count-work"});
     EXPECT_EQ(bench.exitCode, 0) << bench.err;
-    std::size_t key = bench.out.find("\"cpu_ms_per_frame\": ");
-    if (key == std::string::npos) {
-        ADD_FAILURE() << "no cpu_ms_per_frame in " << bench.out;
-        return 1e30;
+    HierarchyWork work;
+    for (auto [key, value] : {std::pair{"\"node_visits\": ", &work.nodeVisits},
+                              std::pair{"\"leaf_primitive_tests\": ", &work.leafPrimitiveTests}}) {
+        const std::size_t at = bench.out.find(key);
+        if (at == std::string::npos) {
+            ADD_FAILURE() << "no " << key << "in " << bench.out;
+            continue;
+        }
+        *value = std::stoull(bench.out.substr(at + std::strlen(key)));
     }
-    return std::stod(bench.out.substr(key + 20));
+    return work;
 }
 
 // 2000 triangles in the plane y = 0 against the same moved to y = 0.001: the same work
-// when boxes are culled (measured 0.8x), and 11x slower when the slab test cannot
-// cull a box whose face holds the ray's origin.
+// when boxes are culled, and many times more when the slab test cannot cull a box whose
+// face holds the ray's origin (which on lavapipe made the frame 11x slower).
 TEST(Culling, GeometryInAPlaneThroughTheEyeCostsNoMoreThanOffIt) {
-    std::filesystem::path dir = freshOutputDir("culling/time");
+    std::filesystem::path dir = freshOutputDir("culling/work");
     std::filesystem::path onPlane = dir / "on-plane.scene", offPlane = dir / "off-plane.scene";
     writeTextFile(onPlane, trianglesInAPlane(0.0, 2000));
     writeTextFile(offPlane, trianglesInAPlane(0.001, 2000));
-    // The fastest of three rounds, the two scenes interleaved so that a slow spell of the
-    // machine falls on both alike.
-    double on = 1e30, off = 1e30;
-    for (int round = 0; round < 3; ++round) {
-        on = std::min(on, cpuMsPerFrame(onPlane));
-        off = std::min(off, cpuMsPerFrame(offPlane));
-    }
-    if (testing::Test::HasFailure()) return; // a failed run has no time to compare
-    std::printf("culling: %.2f ms of CPU a frame in the plane through the eye, %.2f ms off it\n",
-                on, off);
-    EXPECT_LT(on, 2.0 * off) << "boxes with a face through the eye are not culled";
+    const HierarchyWork on = hierarchyWork(onPlane), off = hierarchyWork(offPlane);
+    if (testing::Test::HasFailure()) return;
+    std::printf("culling: %llu nodes visited and %llu triangles tested in the plane through "
+                "the eye, %llu and %llu off it\n",
+                static_cast<unsigned long long>(on.nodeVisits),
+                static_cast<unsigned long long>(on.leafPrimitiveTests),
+                static_cast<unsigned long long>(off.nodeVisits),
+                static_cast<unsigned long long>(off.leafPrimitiveTests));
+    EXPECT_GT(off.nodeVisits, 0u) << "the kernel counted nothing";
+    EXPECT_LT(on.nodeVisits, 2 * off.nodeVisits)
+        << "boxes with a face through the eye are not culled";
+    EXPECT_LT(on.leafPrimitiveTests, 2 * off.leafPrimitiveTests)
+        << "boxes with a face through the eye are not culled";
 }
 
 // The same scene (fewer triangles: the brute-force path tests them all) against the

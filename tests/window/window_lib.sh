@@ -51,12 +51,13 @@ wait_for_log() { # PID LOG TEXT COUNT SECONDS
     done
 }
 
-# Captures window ID until it equals EXPECTED.PNG exactly (a few tries: the present may
-# reach the X server a moment after the program logs the frame). Writes PREFIX.png and
+# Captures window ID until it equals EXPECTED.PNG exactly, up to TRIES times 0.4 s apart
+# (default 50: the present may reach the X server a while after the program logs the frame,
+# more so on a loaded machine; a match returns at once). Writes PREFIX.png and
 # PREFIX-diff.txt; returns 0 on a match.
-window_matches() { # ID EXPECTED.PNG PREFIX
-    local id=$1 expected=$2 prefix=$3
-    for _ in 1 2 3 4 5 6 7 8; do
+window_matches() { # ID EXPECTED.PNG PREFIX [TRIES]
+    local id=$1 expected=$2 prefix=$3 tries=${4:-50}
+    for _ in $(seq 1 "$tries"); do
         sleep 0.4
         timeout 10 xwd -id "$id" -silent > "$prefix.xwd" 2>/dev/null || continue
         xwd_to_png "$prefix.xwd" "$prefix.png" > /dev/null || continue
@@ -66,6 +67,46 @@ window_matches() { # ID EXPECTED.PNG PREFIX
         fi
     done
     return 1
+}
+
+# Waits until the title of the window showing NAME reports at least MIN samples per pixel
+# ("NAME - WxH - k/N spp - ..." with k >= MIN), while PID runs; fails after SECONDS.
+wait_for_samples() { # PID NAME MIN SECONDS
+    local pid=$1 name=$2 min=$3 deadline=$((SECONDS + $4)) done
+    while :; do
+        done=$(timeout 10 xwininfo -root -tree | grep -F "\"$name - " |
+            sed -nE 's/^.* - ([0-9]+)\/[0-9]+ spp - .*$/\1/p' | head -n 1 || true)
+        [[ -n $done ]] && ((done >= min)) && return 0
+        kill -0 "$pid" 2>/dev/null || return 1
+        ((SECONDS <= deadline)) || return 1
+        sleep 0.2
+    done
+}
+
+# Holds KEY down in window ID until the camera has moved away from the one O printed last
+# (O is pressed again until its line differs), then lets go; LOG is the program's output.
+# The fly keys are read as held on each frame, so the key is held for frames, not seconds:
+# a loaded machine that draws a frame a second still sees it held. Returns 1 if the camera
+# has not moved after SECONDS.
+hold_key_until_moved() { # PID ID KEY LOG SECONDS
+    local pid=$1 id=$2 key=$3 log=$4 deadline=$((SECONDS + $5)) before count moved=1
+    count=$(grep -cF "Camera: --camera-pos" "$log" || true)
+    press_key "$id" o
+    wait_for_log "$pid" "$log" "Camera: --camera-pos" $((count + 1)) 30 || return 1
+    before=$(grep -F "Camera: --camera-pos" "$log" | tail -n 1)
+    timeout 10 xdotool keydown --window "$id" "$key" || true
+    while ((SECONDS <= deadline)); do
+        count=$(grep -cF "Camera: --camera-pos" "$log" || true)
+        press_key "$id" o
+        wait_for_log "$pid" "$log" "Camera: --camera-pos" $((count + 1)) 30 || break
+        if [[ $(grep -F "Camera: --camera-pos" "$log" | tail -n 1) != "$before" ]]; then
+            moved=0
+            break
+        fi
+        sleep 0.2
+    done
+    timeout 10 xdotool keyup --window "$id" "$key" || true
+    return "$moved"
 }
 
 # The id of the first window whose title starts with "NAME - ", waiting up to SECONDS.

@@ -54,7 +54,7 @@ run_inside_xvfb() {
 
     # Shown: on the window, not in P.
     sleep 0.5
-    if window_matches "$id" r2.png shown-window; then
+    if window_matches "$id" r2.png shown-window 4; then
         fail "--overlay: the window shows no overlay (it equals the headless render)"
     else
         pass "--overlay: the overlay is on the window ($(cat shown-window-diff.txt | head -c 200))"

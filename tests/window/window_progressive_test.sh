@@ -140,7 +140,7 @@ run_inside_xvfb() {
     # exactly. A move may finish several refinements, so the log is counted afresh each time.
     local x=$((WIDTH / 2)) y=$((HEIGHT / 2))
     moved_view() { # LABEL PREFIX: waits for a new refinement, expects a view unlike spec.png
-        if wait_for_log "$pid" "$log" "Refined: $SPP samples" $((refined + 1)) 60 && ! window_matches "$id" spec.png "$2"; then
+        if wait_for_log "$pid" "$log" "Refined: $SPP samples" $((refined + 1)) 60 && ! window_matches "$id" spec.png "$2" 4; then
             pass "$1 moves the camera (the view changed)"
         else
             fail "$1 did not move the camera"
@@ -167,11 +167,11 @@ run_inside_xvfb() {
     moved_view "the wheel (dolly)" dolly-window
     reset_view c c-after-dolly-window
     refined=$(grep -cF "Refined: $SPP samples" "$log")
-    timeout 10 xdotool keydown --window "$id" w sleep 0.5 keyup --window "$id" w || true
+    hold_key_until_moved "$pid" "$id" w "$log" 60 || true
     moved_view "holding W (fly)" fly-window
     reset_view Home home-after-fly-window
     refined=$(grep -cF "Refined: $SPP samples" "$log")
-    timeout 10 xdotool keydown --window "$id" Up sleep 0.5 keyup --window "$id" Up || true
+    hold_key_until_moved "$pid" "$id" Up "$log" 60 || true
     moved_view "holding Up (fly, as W)" up-window
     reset_view Home home-after-up-window
 
@@ -192,7 +192,10 @@ mid_refinement() {
         > "$log" 2>&1 &
     local pid=$!
     id=$(wait_for_window "$pid" "$name" 90) || { fail "no second window (log $log)"; cat "$log"; return; }
-    sleep 2
+    # P at whatever count the window has reached once it has traced something: the count it
+    # names must be the image it writes (tests/window/window_snapshots_test.sh checks
+    # chosen counts exactly).
+    wait_for_samples "$pid" "$name" 1 60 || fail "the title never showed a sample (log $log)"
     press_key "$id" p
     if wait_for_log "$pid" "$log" "Screenshot: wrote" 1 30; then
         local line
