@@ -88,10 +88,22 @@ vec3 storySampleColor(vec3 color) {
     return color;
 }
 
-// The pixel's value: the average of its clamped samples and the levels the image gets
-// (the same arithmetic as main's write).
-void storyPixel(vec3 average, uint samples) {
+// The pixel's value once samples 0..end-1 of `samples` are in `sum`: the average of its
+// clamped samples and the levels the image gets (the same arithmetic as main's write).
+// Before the last pass (the host traced the samples in several dispatches) pixelColor holds
+// the running sum instead, which the next pass reads back (storyRunningSum).
+void storyPixel(vec3 sum, uint end, uint samples) {
+    if (end < samples) {
+        story.pixelColor = vec4(sum, 0.0);
+        return;
+    }
+    vec3 average = sum / float(end);
     story.pixelColor = vec4(average, 0.0);
     story.pixelLevel = uvec4(uvec3(floor(average * 255.0 + 0.5)), 0u);
     story.counts.yzw = uvec3(lightCount, samples, 1u);
+}
+
+// The running sum an earlier pass left (storyPixel).
+vec3 storyRunningSum() {
+    return story.pixelColor.rgb;
 }

@@ -234,7 +234,8 @@ struct GpuPixelStory {
     uvec4 counts;      // x: bounces recorded, y: lights in the scene, z: samples, w: 1 once written
     vec4 sampleOffset; // xy: sample 0's (u, v) inside the pixel; zw unused
     vec4 sampleColor;  // rgb: sample 0's colour before the clamp; w unused
-    vec4 pixelColor;   // rgb: the average of the clamped samples; w unused
+    vec4 pixelColor;   // rgb: the average of the clamped samples (the running sum between the
+                       // passes of a pixel traced in several dispatches); w unused
     uvec4 pixelLevel;  // rgb: the 8-bit levels written to the image; w unused
     GpuStoryBounce bounces[MAX_DEPTH + 1];
 };

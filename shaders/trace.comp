@@ -214,7 +214,9 @@ void main() {
     uint end = progressive ? min(first + params.dispatch.w, samples) : samples;
     uint slot = pixel.y * params.image.x + pixel.x;
     vec3 sum = vec3(0.0);
-    if (progressive && first != 0u) sum = accumulation[slot].rgb;
+    // The story kernel keeps its one pixel's running sum in the story, not in accumulation[],
+    // which may hold the window's.
+    if (progressive && first != 0u) sum = recordPixel ? storyRunningSum() : accumulation[slot].rgb;
     // One closing pass more than the samples, which traces nothing: the loop then leaves
     // through its own test only if every earlier test passed. A driver that ends loops early
     // (llvmpipe's 65535 loop iterations per invocation, GpuKernelStatus) ends this one too,
@@ -234,7 +236,7 @@ void main() {
         atomicAdd(status.leafPrimitiveTests, leafPrimitiveTests);
     }
     if (recordPixel) { // the story, not the image
-        storyPixel(sum / float(end), samples);
+        storyPixel(sum, end, samples);
         return;
     }
     if (progressive) accumulation[slot] = vec4(sum, 0.0);

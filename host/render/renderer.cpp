@@ -426,11 +426,19 @@ void recordPixelStoryTrace(const Renderer& renderer, VkCommandBuffer commands, s
     // renderer's descriptor set is compatible with it.
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.storyPipeline.layout,
                             0, 1, &renderer.descriptorSet, 0, nullptr);
-    // The pixel first in the dispatch: the invocation (0, 0) of workgroup (0, 0) traces it.
-    const gpu::GpuFrameParams params = frameParams(renderer, x, y, 1, {});
-    vkCmdPushConstants(commands, renderer.storyPipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0,
-                       sizeof(params), &params);
-    vkCmdDispatch(commands, 1, 1, 1);
+    // The pixel first in the dispatch: the invocation (0, 0) of workgroup (0, 0) traces it,
+    // in passes of at most renderer.samplesPerPass samples (its running sum in the story).
+    const std::uint32_t all = std::max(renderer.settings.samplesPerPixel, 1u);
+    const std::uint32_t perPass = renderer.samplesPerPass == 0 ? all : renderer.samplesPerPass;
+    for (std::uint32_t first = 0; first < all; first += perPass) {
+        const SampleRange samples =
+            perPass >= all ? SampleRange{} : SampleRange{first, std::min(perPass, all - first)};
+        if (first != 0) recordSumBarrier(commands);
+        const gpu::GpuFrameParams params = frameParams(renderer, x, y, 1, samples);
+        vkCmdPushConstants(commands, renderer.storyPipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                           sizeof(params), &params);
+        vkCmdDispatch(commands, 1, 1, 1);
+    }
 }
 
 double lastTraceGpuMilliseconds(const Renderer& renderer, const Context& context) {

@@ -151,7 +151,8 @@ void recordTraceRegion(const Renderer& renderer, VkCommandBuffer commands,
 void recordTraceEnd(const Renderer& renderer, VkCommandBuffer commands);
 
 // Records the recording kernel (renderer.storyPipeline, which must exist) for pixel (x, y)
-// alone, all its samples in one pass; the output image must be in VK_IMAGE_LAYOUT_GENERAL.
+// alone, its samples in passes of at most renderer.samplesPerPass; the output image must be
+// in VK_IMAGE_LAYOUT_GENERAL.
 void recordPixelStoryTrace(const Renderer& renderer, VkCommandBuffer commands, std::uint32_t x,
                            std::uint32_t y);
 
