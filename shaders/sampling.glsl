@@ -2,13 +2,14 @@
 // always the pixel's centre (docs/model.md). With N > 1, sampleOffset(pixel, s, N) is sample s:
 //  - grid:       the centre of cell s of the most nearly square grid of exactly N cells;
 //  - stratified: a jittered point in that cell, the jitter hashed from (pixel, s, seed);
-//  - r2:         sample 0 is the pixel's centre, as at one sample; sample s > 0 is point s
-//                of Roberts' R2 sequence ("The Unreasonable Effectiveness of Quasirandom
-//                Sequences", 2018), shifted by a per-pixel random rotation (Cranley &
-//                Patterson 1976) hashed from (pixel, seed). Sample s does not depend on N,
-//                so the first k samples of an N-sample render are the k-sample render for
-//                every k, one included: a progressive display shows the headless --spp k
-//                image at each k on its way to --spp N.
+//  - r2:         point s of Roberts' R2 sequence ("The Unreasonable Effectiveness of
+//                Quasirandom Sequences", 2018), shifted by a per-pixel random rotation
+//                (Cranley & Patterson 1976) hashed from (pixel, seed). Point s does not
+//                depend on N, so the first k samples of an N-sample render are the k-sample
+//                render for every k from 2: a progressive display shows the headless --spp k
+//                image at each such k on its way to --spp N (and shows the one-sample image,
+//                the centre, first: host/window/present.cpp). Sample 0 is not the centre:
+//                that costs 3-23% more error at 4 to 16 samples (docs/accuracy.md).
 // Needs: params (seed in counts.w) and the samplerKind specialization constant (trace.comp).
 
 // Integer hash "lowbias32" (Chris Wellons, hash-prospector): a well-mixed 32-bit permutation.
@@ -45,7 +46,7 @@ vec2 unitFromBits(uvec2 bits) {
 const uvec2 R2_ALPHA = uvec2(3242174889u, 2447445413u);
 
 vec2 sampleOffset(uvec2 pixel, uint s, uint n) {
-    if (n <= 1u || (samplerKind == SAMPLER_R2 && s == 0u)) return vec2(0.5);
+    if (n <= 1u) return vec2(0.5);
     uint seed = params.counts.w;
     if (samplerKind == SAMPLER_R2) {
         uint h1 = hashUint(hashUint(hashUint(pixel.x) ^ pixel.y) ^ hashUint(seed ^ 0x52325232u));

@@ -112,7 +112,8 @@ gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t dispatch
     params.cameraOrigin = glm::vec4(glm::vec3(settings.camera.position), 0.0f);
     params.cameraOrientation = glm::vec4(float(orientation.x), float(orientation.y),
                                          float(orientation.z), float(orientation.w));
-    params.image = glm::uvec4(settings.width, settings.height, settings.samplesPerPixel,
+    params.image = glm::uvec4(settings.width, settings.height,
+                              samples.of != 0 ? samples.of : settings.samplesPerPixel,
                               std::min<std::uint32_t>(settings.depth, MAX_DEPTH));
     params.counts = glm::uvec4(renderer.scene.sphereCount, renderer.scene.triangleCount,
                                renderer.scene.lightCount, settings.kernel.seed);
@@ -349,7 +350,7 @@ void recordRegion(const Renderer& renderer, VkCommandBuffer commands, const Trac
         for (std::uint32_t first = samples.first; first < end;) {
             const std::uint32_t count = perPass == 0 ? end - first : std::min(perPass, end - first);
             if (first != samples.first) recordSumBarrier(commands);
-            recordPass(renderer, commands, region, {first, count});
+            recordPass(renderer, commands, region, {first, count, samples.of});
             first += count;
         }
     }

@@ -50,9 +50,12 @@ struct RenderSettings {
 // The samples one dispatch adds (GpuFrameParams.dispatch.zw): count 0 traces all of
 // samplesPerPixel in one pass; otherwise samples first..first+count-1 are added to the
 // running sum (RenderSettings::progressive), first 0 starting it afresh.
+// of: the sample count N the samples belong to (sampleOffset's n), when not the renderer's
+// samplesPerPixel: the window's first frame is the one-sample image (of 1), the pixel centre.
 struct SampleRange {
     std::uint32_t first = 0;
     std::uint32_t count = 0;
+    std::uint32_t of = 0;
 };
 
 // Where each primitive slot of the kernel (leaf order) comes from in the scene file: its

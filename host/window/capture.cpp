@@ -15,12 +15,13 @@
 namespace {
 
 // The headless twin of an image of `samples` samples per pixel: exact when refinement is
-// done, or with the r2 sampler, whose sample s does not depend on the sample count (the
-// window adds samples 0..s-1 in the order a headless render does).
+// done, at one sample (the window's first frame is the one-sample image), or with the r2
+// sampler, whose sample s does not depend on the sample count (the window adds samples
+// 0..s-1 in the order a headless render does).
 std::string headlessTwin(const Viewer& viewer, std::uint32_t width, std::uint32_t height,
                          std::uint32_t samples) {
     const Options& options = viewer.options;
-    if (samples != viewer.sampleTarget && options.kernel.sampler != Sampler::R2)
+    if (samples != viewer.sampleTarget && samples != 1 && options.kernel.sampler != Sampler::R2)
         return "; the " + choiceName(samplerNames(), options.kernel.sampler) +
                " sampler places its samples by their count, so only the finished image (" +
                std::to_string(viewer.sampleTarget) + " samples) has a headless twin";

@@ -72,6 +72,23 @@ void showTitle(const Viewer& viewer) {
     glfwSetWindowTitle(viewer.window, title);
 }
 
+// The samples the next frame adds. The first frame of a view is the one-sample image, the
+// pixel centre (as headless --spp 1), so that what the window shows after 1 sample is what
+// 1 sample renders; the next frame starts the sum of the target's samples afresh, with at
+// least 2 of them (samples 0..k-1 of an N-sample render are the k-sample render from k = 2:
+// shaders/sampling.glsl). A frame stops at the next --snapshots count, so that the count is
+// shown exactly.
+SampleRange nextSamples(const Viewer& viewer) {
+    if (viewer.samplesDone == 0 && viewer.sampleTarget > 1) return {0, 1, 1};
+    std::uint32_t stop = viewer.sampleTarget;
+    if (viewer.nextSnapshot < viewer.snapshotCounts.size())
+        stop = std::min(stop, viewer.snapshotCounts[viewer.nextSnapshot]);
+    const std::uint32_t first = viewer.centreOnly ? 0 : viewer.samplesDone;
+    std::uint32_t count = std::min(viewer.samplesPerFrame, stop - first);
+    if (viewer.centreOnly) count = std::max(count, 2u);
+    return {first, count};
+}
+
 // More samples per frame while frames are quick, fewer when slow. The bench keeps one.
 void adaptSamplesPerFrame(Viewer& viewer, double milliseconds) {
     if (viewer.benchFrames > 0) return;
@@ -160,14 +177,7 @@ void drawFrame(Viewer& viewer) {
     if (acquired != VK_SUBOPTIMAL_KHR)
         VK_CHECK(acquired); // suboptimal still acquired an image: use it
     VK_CHECK(vkResetFences(device, 1, &frame.done));
-    SampleRange samples;
-    if (refining(viewer)) {
-        // A frame stops at the next --snapshots count, so that the count is shown exactly.
-        std::uint32_t stop = viewer.sampleTarget;
-        if (viewer.nextSnapshot < viewer.snapshotCounts.size())
-            stop = std::min(stop, viewer.snapshotCounts[viewer.nextSnapshot]);
-        samples = {viewer.samplesDone, std::min(viewer.samplesPerFrame, stop - viewer.samplesDone)};
-    }
+    const SampleRange samples = refining(viewer) ? nextSamples(viewer) : SampleRange{};
     record(viewer, frame.commands, imageIndex, samples);
 
     VkSemaphore renderFinished = viewer.swapchain.renderFinished[imageIndex];
@@ -221,7 +231,8 @@ void drawFrame(Viewer& viewer) {
                          "invocation's loops after 65535 iterations in all, and one sample of "
                          "them needs more\n");
         }
-        viewer.samplesDone += samples.count;
+        viewer.samplesDone = samples.first + samples.count;
+        viewer.centreOnly = samples.of == 1 && viewer.sampleTarget > 1;
         if (viewer.nextSnapshot < viewer.snapshotCounts.size() &&
             viewer.samplesDone == viewer.snapshotCounts[viewer.nextSnapshot]) {
             viewer.snapshotNow = true; // written after this frame, as P's screenshot is

@@ -253,7 +253,7 @@ run_in_xvfb() { # SECONDS SCREEN COMMAND...
 absolute() { echo "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; }
 
 # The entry of a window test run as SCRIPT RAYTRACER SCENE OUTPUT_DIR IMAGE_DIFF: clears
-# OUTPUT_DIR's files and runs SCRIPT again inside a new 1024x768 Xvfb for at most 280 s;
+# OUTPUT_DIR's files and runs SCRIPT again inside a new 1024x768 Xvfb for at most 560 s;
 # there (first argument --inside-xvfb) it sets raytracer, scene, output_dir and image_diff
 # and calls the script's run_inside_xvfb. Call it last, as: window_test_main "$0" "$@".
 window_test_main() { # SCRIPT ARGS...
@@ -271,6 +271,6 @@ window_test_main() { # SCRIPT ARGS...
     require_window_tools
     mkdir -p "$3"
     rm -f "$3"/*.png "$3"/*.xwd "$3"/*.log "$3"/*.txt
-    run_in_xvfb 280 1024x768x24 "$(absolute "$script")" --inside-xvfb "$(absolute "$1")" \
+    run_in_xvfb 560 1024x768x24 "$(absolute "$script")" --inside-xvfb "$(absolute "$1")" \
         "$(absolute "$2")" "$(absolute "$3")" "$(absolute "$4")"
 }

@@ -46,7 +46,7 @@ run_inside_xvfb() {
     fi
     local log=window.log name id
     name=$(basename "$scene")
-    timeout 200 "$raytracer" "$scene" --validate --overlay --width $WIDTH --height $HEIGHT --spp $SPP \
+    timeout 400 "$raytracer" "$scene" --validate --overlay --width $WIDTH --height $HEIGHT --spp $SPP \
         > "$log" 2>&1 &
     local pid=$!
     id=$(wait_for_window "$pid" "$name" 90) || { fail "no window (log $log)"; cat "$log"; exit 1; }

@@ -24,7 +24,7 @@ run_inside_xvfb() {
     headless spec.png
     local log=window.log name id
     name=$(basename "$scene")
-    timeout 150 "$raytracer" "$scene" --validate --width $WIDTH --height $HEIGHT --spp $SPP "${CAMERA[@]}" \
+    timeout 400 "$raytracer" "$scene" --validate --width $WIDTH --height $HEIGHT --spp $SPP "${CAMERA[@]}" \
         > "$log" 2>&1 &
     local pid=$!
     id=$(wait_for_window "$pid" "$name" 90) || { fail "no window (log $log)"; cat "$log"; exit 1; }
@@ -188,7 +188,7 @@ run_inside_xvfb() {
 mid_refinement() {
     local log=window-mid.log name id shot samples
     name=$(basename "$scene")
-    timeout 150 "$raytracer" "$scene" --validate --width $WIDTH --height $HEIGHT --spp 65536 "${CAMERA[@]}" \
+    timeout 400 "$raytracer" "$scene" --validate --width $WIDTH --height $HEIGHT --spp 65536 "${CAMERA[@]}" \
         > "$log" 2>&1 &
     local pid=$!
     id=$(wait_for_window "$pid" "$name" 90) || { fail "no second window (log $log)"; cat "$log"; return; }
@@ -243,7 +243,7 @@ f 2 3 7 6
 f 3 4 8 7
 f 4 1 5 8
 f 5 6 7 8' > "$model"
-    timeout 150 "$raytracer" "$model" --validate --width $WIDTH --height $HEIGHT --spp $SPP > "$log" 2>&1 &
+    timeout 400 "$raytracer" "$model" --validate --width $WIDTH --height $HEIGHT --spp $SPP > "$log" 2>&1 &
     local pid=$!
     id=$(wait_for_window "$pid" "$model" 90) || { fail "no model window (log $log)"; cat "$log"; return; }
     wait_for_log "$pid" "$log" "Refined: $SPP samples" 1 60 || fail "the model window never refined (log $log)"

@@ -37,7 +37,7 @@ run_inside_xvfb() {
     headless first.png $WIDTH $HEIGHT
 
     local log=window.log id reloads=0
-    timeout 200 "$raytracer" scene.scene --validate --spp 1 --width $WIDTH --height $HEIGHT --shader-dir shaders \
+    timeout 400 "$raytracer" scene.scene --validate --spp 1 --width $WIDTH --height $HEIGHT --shader-dir shaders \
         > "$log" 2>&1 &
     local pid=$!
     id=$(wait_for_window "$pid" scene.scene 90) || { fail "no window (log $log)"; cat "$log"; exit 1; }

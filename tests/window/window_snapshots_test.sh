@@ -4,7 +4,8 @@
 # each PNG must name its count and equal, byte for byte, both headless --spp K and the
 # headless command printed with it. The counts are reached by the window's own frames, not
 # by waiting some seconds, so a slow machine and a fast one test the same images. 255, 256
-# and 257 straddle a frame's usual end (64 samples a frame at most); 1 is the pixel centre.
+# and 257 straddle a frame's usual end (64 samples a frame at most); 1 is the window's
+# first frame, the pixel centre, and 7 its sum started afresh after it.
 #
 # usage: window_snapshots_test.sh RAYTRACER SCENE OUTPUT_DIR IMAGE_DIFF
 set -euo pipefail
@@ -24,7 +25,7 @@ run_inside_xvfb() {
     local pid=$!
     id=$(wait_for_window "$pid" "$name" 90) || { fail "no window (log $log)"; cat "$log"; exit 1; }
     # The last snapshot comes with the last sample: the window is then done refining.
-    if ! wait_for_log "$pid" "$log" "Screenshot: wrote" ${#COUNTS[@]} 240; then
+    if ! wait_for_log "$pid" "$log" "Screenshot: wrote" ${#COUNTS[@]} 480; then
         fail "the window wrote $(grep -cF "Screenshot: wrote" "$log" || true) of ${#COUNTS[@]} snapshots (log $log)"
     fi
     local k line shot replay
