@@ -161,7 +161,8 @@ struct GpuFrameParams {
     vec4 ambient;           // rgb ambient light added once per shading point, w unused
     vec4 camera;            // x: aspect * tan(fov/2), y: tan(fov/2), z: the stride of the
                             // workgroup rows' order over the dispatch's rows of tiles (the
-                            // uint's bits; host/packing/workgroup_order.h), w unused
+                            // uint's bits; host/packing/workgroup_order.h), w:
+                            // LOOP_PROBE_ITERATIONS (the uint's bits; trace.comp, main)
     vec4 cameraOrigin;      // the eye in world space: xyz, w unused (0 for the default camera)
     vec4 cameraOrientation; // unit quaternion xyzw, camera space to world (0,0,0,1 for the default
                             // camera)
@@ -211,6 +212,12 @@ struct GpuStoryBounce {
     vec4 color;            // rgb: the sample's colour so far, this bounce's share included
     GpuStoryLight lights[MAX_STORY_LIGHTS];
 };
+
+// The passes of the kernel's last loop, which tells whether the driver ended its loops early
+// (trace.comp, main); given in GpuFrameParams.camera.w, so that the compiler cannot unroll it.
+// Three, not two: the compiler runs a loop's first pass before the loop proper, and a driver
+// that ends loops early still lets the loop proper run one pass.
+#define LOOP_PROBE_ITERATIONS 3u
 
 // The kernel's report on a submission (BINDING_KERNEL_STATUS).
 // cutShortInvocations: invocations whose loops were ended early by the driver, not by the

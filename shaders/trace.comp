@@ -217,20 +217,26 @@ void main() {
     // The story kernel keeps its one pixel's running sum in the story, not in accumulation[],
     // which may hold the window's.
     if (progressive && first != 0u) sum = recordPixel ? storyRunningSum() : accumulation[slot].rgb;
-    // One closing pass more than the samples, which traces nothing: the loop then leaves
-    // through its own test only if every earlier test passed. A driver that ends loops early
-    // (llvmpipe's 65535 loop iterations per invocation, GpuKernelStatus) ends this one too,
-    // before s reaches end + 1, and the invocation reports itself cut short.
     uint s = first;
-    do {
-        if (s < end) {
+    if (s < end) { // do-while: see traverseBvh (bvh.glsl)
+        do {
             storyStartSample(s, sampleOffset(pixel, s, samples));
             sum +=
                 clamp(storySampleColor(traceRay(cameraRay(pixel, sampleOffset(pixel, s, samples)))),
                       0.0, 1.0);
-        }
-    } while (++s <= end);
-    if (s != end + 1u) atomicAdd(status.cutShortInvocations, 1u);
+        } while (++s < end);
+    }
+    // A loop of LOOP_PROBE_ITERATIONS passes, whose count the compiler cannot see (it comes
+    // from the host): a driver that ends loops early once an invocation has used its share
+    // (llvmpipe's 65535 loop iterations, GpuKernelStatus) ends this one early too, and the
+    // invocation reports itself cut short. An extra pass of the sample loop would say the
+    // same, but lavapipe runs a loop's body masked even when no lane is left in it: a whole
+    // sample's instructions for nothing.
+    uint probe = 0u;
+    do {
+        ++probe;
+    } while (probe < floatBitsToUint(params.camera.w));
+    if (probe != LOOP_PROBE_ITERATIONS) atomicAdd(status.cutShortInvocations, 1u);
     if (countWork) {
         atomicAdd(status.nodeVisits, nodeVisits);
         atomicAdd(status.leafPrimitiveTests, leafPrimitiveTests);

@@ -125,6 +125,7 @@ FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context, 
     while (nextRegion(target.planner, region)) {
         const bool last = frameCovered(target.planner);
         double milliseconds = 0.0;
+        bool retrying = false;
         // A region whose invocations the driver cut short is traced again, in passes of
         // fewer samples, until none is or a pass is one sample.
         for (;;) {
@@ -134,6 +135,8 @@ FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context, 
             begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
             VK_CHECK(vkBeginCommandBuffer(target.commands, &begin));
             if (!begun) recordTraceBegin(renderer, target.commands);
+            // A last region traced again finds the image handed to the copy.
+            if (retrying && last) recordTraceResume(renderer, target.commands);
             recordTraceRegion(renderer, target.commands,
                               {area.x + region.x, area.y + region.y, region.width, region.height});
             if (last) {
@@ -160,6 +163,7 @@ FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context, 
                 timing.cutShortInvocations += cutShort;
                 break;
             }
+            retrying = true;
         }
         regionTraced(target.planner, region, milliseconds);
         timing.longestSubmissionMs = std::max(timing.longestSubmissionMs, milliseconds);

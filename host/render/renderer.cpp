@@ -107,7 +107,8 @@ gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t dispatch
     params.background = glm::vec4(settings.background, 0.0f);
     params.ambient = renderer.scene.ambient;
     params.camera = glm::vec4(float(aspect * tanHalfFov), float(tanHalfFov),
-                              std::bit_cast<float>(rowStride(workgroupRows)), 0.0f);
+                              std::bit_cast<float>(rowStride(workgroupRows)),
+                              std::bit_cast<float>(std::uint32_t(LOOP_PROBE_ITERATIONS)));
     const glm::dquat orientation = cameraOrientation(settings.camera);
     params.cameraOrigin = glm::vec4(glm::vec3(settings.camera.position), 0.0f);
     params.cameraOrientation = glm::vec4(float(orientation.x), float(orientation.y),
@@ -379,6 +380,13 @@ void recordTraceEnd(const Renderer& renderer, VkCommandBuffer commands) {
                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                     VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                     VK_ACCESS_TRANSFER_READ_BIT);
+}
+
+void recordTraceResume(const Renderer& renderer, VkCommandBuffer commands) {
+    transitionImage(commands, renderer.outputImage.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                    VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                    VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 }
 
 void recordTrace(const Renderer& renderer, VkCommandBuffer commands, SampleRange samples) {

@@ -152,6 +152,9 @@ void recordTraceBegin(const Renderer& renderer, VkCommandBuffer commands);
 void recordTraceRegion(const Renderer& renderer, VkCommandBuffer commands,
                        const TraceRegion& region);
 void recordTraceEnd(const Renderer& renderer, VkCommandBuffer commands);
+// Undoes recordTraceEnd's hand-over, keeping the image, so that a region can be traced again
+// after the frame's last submission (a region the driver cut short, traced in smaller passes).
+void recordTraceResume(const Renderer& renderer, VkCommandBuffer commands);
 
 // Records the recording kernel (renderer.storyPipeline, which must exist) for pixel (x, y)
 // alone, its samples in passes of at most renderer.samplesPerPass; the output image must be

@@ -374,6 +374,52 @@ TEST(Culling, GeometryInAPlaneThroughTheEyeCostsNoMoreThanOffIt) {
         << "boxes with a face through the eye are not culled";
 }
 
+// Many samples per pixel: lavapipe ends an invocation's loops after 65535 iterations in all
+// (docs/design.md), which 256 samples of a pixel looking into mirrors.scene's mirrors pass.
+// With --sampler grid the samples are the reference's, so the image must match it as one
+// sample does, through the hierarchy and without it; none of its pixels is named wrong.
+TEST(ManySamples, AGridOf256SamplesMatchesTheReference) {
+    std::filesystem::path dir = freshOutputDir("many-samples/grid");
+    const std::filesystem::path scene = std::filesystem::path(PROJECT_SCENES_DIR) / "mirrors.scene";
+    constexpr int kSide = 48;
+    ReferenceSettings settings;
+    settings.width = kSide;
+    settings.height = kSide;
+    settings.spp = 256;
+    const Image8 reference = renderReference(loadScene(scene), settings);
+    for (const std::string accel : {"bvh", "none"}) {
+        const std::filesystem::path png = dir / ("gpu-" + accel + ".png");
+        ProcessResult run =
+            runRaytracer({scene.string(), "-o", png.string(), "--validate", "--accel", accel,
+                          "--width", std::to_string(kSide), "--height", std::to_string(kSide),
+                          "--spp", "256", "--sampler", "grid"});
+        ASSERT_EQ(run.exitCode, 0) << run.err;
+        EXPECT_EQ(run.err.find("may be wrong"), std::string::npos) << run.err;
+        expectMatchesReference(readPng(png), reference, dir, "256 grid samples " + accel);
+    }
+}
+
+// What one sample alone cannot finish within the driver's loop iterations is said: every
+// primary ray of --accel none tests 70,000 triangles, one loop iteration each.
+TEST(ManySamples, PixelsTheDriverCutsShortAreNamed) {
+    std::filesystem::path dir = freshOutputDir("many-samples/cut-short");
+    const std::filesystem::path scenePath = dir / "many.scene";
+    writeTextFile(scenePath, trianglesInAPlane(-1.0, 70000));
+    const std::vector<std::string> common = {scenePath.string(), "--width", "8", "--height", "8"};
+    std::vector<std::string> none = common, bvh = common;
+    none.insert(none.end(), {"-o", (dir / "none.png").string(), "--accel", "none"});
+    bvh.insert(bvh.end(), {"-o", (dir / "bvh.png").string(), "--accel", "bvh"});
+    ProcessResult cut = runRaytracer(none);
+    ASSERT_EQ(cut.exitCode, 0) << cut.err;
+    EXPECT_NE(cut.err.find("pixels may be wrong: the CPU driver ends a shader invocation's loops "
+                           "after 65535 iterations"),
+              std::string::npos)
+        << cut.err;
+    ProcessResult whole = runRaytracer(bvh);
+    ASSERT_EQ(whole.exitCode, 0) << whole.err;
+    EXPECT_EQ(whole.err.find("may be wrong"), std::string::npos) << whole.err;
+}
+
 // The same scene (fewer triangles: the brute-force path tests them all) against the
 // reference, and both paths alike.
 TEST(Culling, GeometryInAPlaneThroughTheEyeMatchesTheReference) {
