@@ -219,9 +219,10 @@ void drawFrame(Viewer& viewer) {
             std::chrono::duration<double, std::milli>(Clock::now() - submitted).count();
         if (cutShortInvocations(viewer.renderer) > 0 && !viewer.cutShortReported) {
             // The driver ended some invocations' loops early (GpuKernelStatus): the sum is
-            // wrong. Fewer samples per dispatch, and the sum starts again.
+            // wrong. Fewer samples per dispatch, and the sum starts again for the same view
+            // (a --snapshots series goes on: the counts it wrote were written right).
             if (traceFewerSamplesPerPass(viewer.renderer, viewer.context, samples.count)) {
-                restartRefinement(viewer);
+                restartSum(viewer);
                 viewer.presentNeeded = true;
                 return;
             }

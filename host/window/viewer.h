@@ -114,6 +114,14 @@ inline bool refining(const Viewer& viewer) {
     return viewer.samplesDone < viewer.sampleTarget;
 }
 
+// The sum starts again from its first sample, for the same image.
+inline void restartSum(Viewer& viewer) {
+    if (viewer.samplesDone != 0) viewer.refineStart = Clock::now();
+    viewer.samplesDone = 0;
+    viewer.centreOnly = false;
+    viewer.samplesPerFrame = 1; // the first frame after a change comes quickly
+}
+
 // Something the image depends on changed: the sum starts again. A --snapshots series under
 // way ends: it belongs to the view the window opened with.
 inline void restartRefinement(Viewer& viewer) {
@@ -124,10 +132,7 @@ inline void restartRefinement(Viewer& viewer) {
                      viewer.samplesDone);
         viewer.nextSnapshot = viewer.snapshotCounts.size();
     }
-    if (viewer.samplesDone != 0) viewer.refineStart = Clock::now();
-    viewer.samplesDone = 0;
-    viewer.centreOnly = false;
-    viewer.samplesPerFrame = 1; // the first frame after a change comes quickly
+    restartSum(viewer);
 }
 
 // A Shift+P request waiting when the view changes is for the new view, and says so (once
