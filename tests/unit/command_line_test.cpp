@@ -293,6 +293,34 @@ TEST(CommandLine, OptionEqualsValueIsTheSameAsTwoWords) {
               "--offset expects fixed, scaled or error-bound, got 'far'");
 }
 
+TEST(CommandLine, SnapshotsAreIncreasingCountsUpToTheWindowsTarget) {
+    EXPECT_EQ(parse({"x.scene", "--spp", "256", "--snapshots", "1,16,256"}).snapshotCounts,
+              (std::vector<std::uint32_t>{1, 16, 256}));
+    const std::string expects = "--snapshots expects sample counts K,K,... (up to 64 whole "
+                                "numbers from 1, increasing), got '";
+    for (const char* counts : {"5,3", "4,4", "0", "a", "1,,2", ""})
+        EXPECT_EQ(usageErrorOf({"x.scene", "--spp", "8", "--snapshots", counts}),
+                  expects + counts + "'")
+            << counts;
+    EXPECT_EQ(usageErrorOf({"x.scene", "--snapshots", "4"}),
+              "--snapshots needs --spp N, the samples per pixel the window refines to");
+    EXPECT_EQ(usageErrorOf({"x.scene", "--spp", "8", "--snapshots", "2,9"}),
+              "--snapshots 9 lies beyond --spp 8, where the window stops refining");
+    for (const std::vector<std::string>& headless : {std::vector<std::string>{"-o", "x.png"},
+                                                     {"--bench", "2"},
+                                                     {"--pixel", "1,1"},
+                                                     {"--check"}})
+        EXPECT_EQ(
+            usageErrorOf([&] {
+                std::vector<std::string> words = {"x.scene", "--spp", "8", "--snapshots", "2"};
+                words.insert(words.end(), headless.begin(), headless.end());
+                return words;
+            }()),
+            "--snapshots writes the window's screenshots and cannot be combined with -o, "
+            "--bench, --bench-window, --pixel or --check")
+            << headless[0];
+}
+
 TEST(CommandLine, SwitchGivenAValueIsAUsageError) {
     for (const char* flag : {"--help", "--version", "--validate", "--no-cache", "--progress",
                              "--window", "--quiet", "--list-devices"})
