@@ -152,9 +152,9 @@ FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context, 
             milliseconds += submitAndTime(target, context);
             begun = true;
             ++timing.submissions;
-            const std::uint32_t cutShort = cutShortInvocations(renderer);
+            const gpu::GpuKernelStatus status = kernelStatus(renderer);
+            const std::uint32_t cutShort = status.cutShortInvocations;
             if (cutShort == 0) {
-                const gpu::GpuKernelStatus status = kernelStatus(renderer);
                 timing.nodeVisits += status.nodeVisits;
                 timing.leafPrimitiveTests += status.leafPrimitiveTests;
                 break;
@@ -173,11 +173,7 @@ FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context, 
     }
     timing.wallMs = millisecondsSince(frameStart);
     if (timing.cutShortInvocations > 0)
-        note("warning: %u pixels may be wrong: the CPU driver ends a shader invocation's "
-             "loops after 65535 iterations in all, and one sample of these pixels needs more "
-             "(more bounces, lights or primitives tested than it allows; --accel bvh tests "
-             "fewer)\n",
-             timing.cutShortInvocations);
+        note("%s\n", cutShortWarning(timing.cutShortInvocations).c_str());
     finishProgress(progress, timing.submissions, timing.longestSubmissionMs);
     return timing;
 }

@@ -330,8 +330,29 @@ void recordSumBarrier(VkCommandBuffer commands) {
                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &sum, 0, nullptr, 0, nullptr);
 }
 
-// Samples (count 0: all of the frame's) over the region, in passes of at most
-// renderer.samplesPerPass samples each.
+// Calls recordOne for each pass of samples (count 0: all of the frame's) of at most
+// renderer.samplesPerPass samples, with the barrier between passes that the running sum
+// needs; all of the frame's samples fit in one pass as count 0.
+template <typename RecordOne>
+void forEachPass(const Renderer& renderer, VkCommandBuffer commands, SampleRange samples,
+                 RecordOne recordOne) {
+    const std::uint32_t perPass = renderer.samplesPerPass;
+    const std::uint32_t all = std::max(renderer.settings.samplesPerPixel, 1u);
+    if (samples.count == 0 && (perPass == 0 || perPass >= all)) {
+        recordOne(SampleRange{});
+        return;
+    }
+    if (samples.count == 0) samples = {0, all};
+    const std::uint32_t end = samples.first + samples.count;
+    for (std::uint32_t first = samples.first; first < end;) {
+        const std::uint32_t count = perPass == 0 ? end - first : std::min(perPass, end - first);
+        if (first != samples.first) recordSumBarrier(commands);
+        recordOne(SampleRange{first, count, samples.of});
+        first += count;
+    }
+}
+
+// Samples (count 0: all of the frame's) over the region, in passes (forEachPass).
 void recordRegion(const Renderer& renderer, VkCommandBuffer commands, const TraceRegion& region,
                   SampleRange samples) {
     if (renderer.timestampPool) {
@@ -341,20 +362,8 @@ void recordRegion(const Renderer& renderer, VkCommandBuffer commands, const Trac
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline.pipeline);
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline.layout, 0,
                             1, &renderer.descriptorSet, 0, nullptr);
-    const std::uint32_t perPass = renderer.samplesPerPass;
-    const std::uint32_t all = std::max(renderer.settings.samplesPerPixel, 1u);
-    if (samples.count == 0 && (perPass == 0 || perPass >= all)) {
-        recordPass(renderer, commands, region, {}); // the whole frame in one pass
-    } else {
-        if (samples.count == 0) samples = {0, all};
-        const std::uint32_t end = samples.first + samples.count;
-        for (std::uint32_t first = samples.first; first < end;) {
-            const std::uint32_t count = perPass == 0 ? end - first : std::min(perPass, end - first);
-            if (first != samples.first) recordSumBarrier(commands);
-            recordPass(renderer, commands, region, {first, count, samples.of});
-            first += count;
-        }
-    }
+    forEachPass(renderer, commands, samples,
+                [&](SampleRange pass) { recordPass(renderer, commands, region, pass); });
     if (renderer.timestampPool)
         vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, renderer.timestampPool,
                             1);
@@ -408,6 +417,13 @@ gpu::GpuKernelStatus kernelStatus(const Renderer& renderer) {
     return status;
 }
 
+std::string cutShortWarning(std::uint32_t invocations) {
+    return "warning: " + std::to_string(invocations) +
+           " pixels may be wrong: the CPU driver ends a shader invocation's loops after 65535 "
+           "iterations in all, and one sample of these pixels needs more (more bounces, lights "
+           "or primitives tested than it allows; --accel bvh tests fewer)";
+}
+
 std::uint32_t cutShortInvocations(const Renderer& renderer) {
     return kernelStatus(renderer).cutShortInvocations;
 }
@@ -437,17 +453,12 @@ void recordPixelStoryTrace(const Renderer& renderer, VkCommandBuffer commands, s
                             0, 1, &renderer.descriptorSet, 0, nullptr);
     // The pixel first in the dispatch: the invocation (0, 0) of workgroup (0, 0) traces it,
     // in passes of at most renderer.samplesPerPass samples (its running sum in the story).
-    const std::uint32_t all = std::max(renderer.settings.samplesPerPixel, 1u);
-    const std::uint32_t perPass = renderer.samplesPerPass == 0 ? all : renderer.samplesPerPass;
-    for (std::uint32_t first = 0; first < all; first += perPass) {
-        const SampleRange samples =
-            perPass >= all ? SampleRange{} : SampleRange{first, std::min(perPass, all - first)};
-        if (first != 0) recordSumBarrier(commands);
-        const gpu::GpuFrameParams params = frameParams(renderer, x, y, 1, samples);
+    forEachPass(renderer, commands, {}, [&](SampleRange pass) {
+        const gpu::GpuFrameParams params = frameParams(renderer, x, y, 1, pass);
         vkCmdPushConstants(commands, renderer.storyPipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0,
                            sizeof(params), &params);
         vkCmdDispatch(commands, 1, 1, 1);
-    }
+    });
 }
 
 double lastTraceGpuMilliseconds(const Renderer& renderer, const Context& context) {

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 struct RenderSettings {
@@ -125,6 +126,8 @@ void resetKernelStatus(const Renderer& renderer);
 // Invocations whose loops the driver ended early since the reset: their pixels are wrong
 // (GpuKernelStatus in shaders/shared.h).
 std::uint32_t cutShortInvocations(const Renderer& renderer);
+// The warning for invocations still cut short at one sample per dispatch.
+std::string cutShortWarning(std::uint32_t invocations);
 // The whole report, for the work counts of --count-work.
 gpu::GpuKernelStatus kernelStatus(const Renderer& renderer);
 

@@ -217,7 +217,8 @@ void drawFrame(Viewer& viewer) {
         VK_CHECK(vkWaitForFences(device, 1, &frame.done, VK_TRUE, UINT64_MAX));
         viewer.lastFrameMs =
             std::chrono::duration<double, std::milli>(Clock::now() - submitted).count();
-        if (cutShortInvocations(viewer.renderer) > 0 && !viewer.cutShortReported) {
+        const std::uint32_t cutShort = cutShortInvocations(viewer.renderer);
+        if (cutShort > 0 && !viewer.cutShortReported) {
             // The driver ended some invocations' loops early (GpuKernelStatus): the sum is
             // wrong. Fewer samples per dispatch, and the sum starts again for the same view
             // (a --snapshots series goes on: the counts it wrote were written right).
@@ -227,10 +228,7 @@ void drawFrame(Viewer& viewer) {
                 return;
             }
             viewer.cutShortReported = true;
-            std::fprintf(stderr,
-                         "warning: some pixels are wrong: the CPU driver ends a shader "
-                         "invocation's loops after 65535 iterations in all, and one sample of "
-                         "them needs more\n");
+            std::fprintf(stderr, "%s\n", cutShortWarning(cutShort).c_str());
         }
         viewer.samplesDone = samples.first + samples.count;
         viewer.centreOnly = samples.of == 1 && viewer.sampleTarget > 1;
