@@ -83,9 +83,11 @@ SampleRange nextSamples(const Viewer& viewer) {
     std::uint32_t stop = viewer.sampleTarget;
     if (viewer.nextSnapshot < viewer.snapshotCounts.size())
         stop = std::min(stop, viewer.snapshotCounts[viewer.nextSnapshot]);
-    const std::uint32_t first = viewer.centreOnly ? 0 : viewer.samplesDone;
+    // One sample shown of more is the first frame's centre, which the target's sum leaves out.
+    const bool centreOnly = viewer.samplesDone == 1 && viewer.sampleTarget > 1;
+    const std::uint32_t first = centreOnly ? 0 : viewer.samplesDone;
     std::uint32_t count = std::min(viewer.samplesPerFrame, stop - first);
-    if (viewer.centreOnly) count = std::max(count, 2u);
+    if (centreOnly) count = std::max(count, 2u);
     return {first, count};
 }
 
@@ -231,7 +233,6 @@ void drawFrame(Viewer& viewer) {
             std::fprintf(stderr, "%s\n", cutShortWarning(cutShort).c_str());
         }
         viewer.samplesDone = samples.first + samples.count;
-        viewer.centreOnly = samples.of == 1 && viewer.sampleTarget > 1;
         if (viewer.nextSnapshot < viewer.snapshotCounts.size() &&
             viewer.samplesDone == viewer.snapshotCounts[viewer.nextSnapshot]) {
             viewer.snapshotNow = true; // written after this frame, as P's screenshot is

@@ -61,11 +61,10 @@ struct Viewer {
     std::string sceneName; // the title's first part
     Scene scene;           // the last scene that loaded, for shader reloads
 
-    // Progressive refinement: samples 0..samplesDone-1 of sampleTarget are in the sum, or
-    // (centreOnly) the one-sample image, the pixel centre, of the view's first frame.
+    // Progressive refinement: samples 0..samplesDone-1 of sampleTarget are in the sum, or,
+    // with 1 of more, the one-sample image (the pixel centre) of the view's first frame.
     std::uint32_t sampleTarget = 1;
     std::uint32_t samplesDone = 0;
-    bool centreOnly = false;
     std::uint32_t samplesPerFrame = 1;
     double lastFrameMs = 0.0;
     std::uint32_t lastFrameSamples = 0; // samples per pixel the last traced frame added
@@ -118,7 +117,6 @@ inline bool refining(const Viewer& viewer) {
 inline void restartSum(Viewer& viewer) {
     if (viewer.samplesDone != 0) viewer.refineStart = Clock::now();
     viewer.samplesDone = 0;
-    viewer.centreOnly = false;
     viewer.samplesPerFrame = 1; // the first frame after a change comes quickly
 }
 
