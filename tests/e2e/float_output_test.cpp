@@ -13,7 +13,7 @@
 #include "test_support.h"
 
 #include "base/float_image.h"
-#include "float_compare.h"
+#include "compare/float_compare.h"
 
 #include <gtest/gtest.h>
 

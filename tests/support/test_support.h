@@ -3,8 +3,8 @@
 #pragma once
 
 #include "base/image_io.h"
-#include "image_compare.h"
-#include "reference_renderer.h"
+#include "compare/image_compare.h"
+#include "reference/reference_renderer.h"
 
 #include <chrono>
 #include <filesystem>

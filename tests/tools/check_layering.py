@@ -21,7 +21,10 @@ ALLOWED = {
     "render": {"base", "scene", "gpu", "packing"},
     "cli": {"base", "scene", "gpu", "packing", "render"},
     "window": {"base", "scene", "gpu", "packing", "render", "cli"},
-    ".": {"base", "scene", "gpu", "packing", "render", "cli", "window"},  # main.cpp, bench.*
+    "reference": {"base", "scene"},
+    "compare": {"base", "scene", "reference"},
+    # main.cpp, bench.*, batch.*
+    ".": {"base", "scene", "gpu", "packing", "render", "cli", "window", "reference", "compare"},
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s+["<]([^">]+)[">]', re.M)
 

@@ -6,7 +6,7 @@
 //   SSIM = (2 mu_x mu_y + C1)(2 sigma_xy + C2) / ((mu_x^2 + mu_y^2 + C1)(sigma_x^2 + sigma_y^2 +
 //   C2))
 // with C1 = (0.01 L)^2, C2 = (0.03 L)^2.
-#include "ssim.h"
+#include "compare/ssim.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // image_diff A B [--tolerance T] [--float-tolerance E] [--min-match PERCENT] [--diff OUT.png]
 // A and B are PNG, PFM or OpenEXR files. Exit status: 0 when enough pixels match, 1 when
 // not, 2 on any error.
-#include "float_compare.h"
-#include "image_compare.h"
-#include "ssim.h"
+#include "compare/float_compare.h"
+#include "compare/image_compare.h"
+#include "compare/ssim.h"
 #include "tool_arguments.h"
 
 #include <charconv>

@@ -12,7 +12,7 @@
 #pragma once
 
 #include "base/image_io.h"
-#include "reference_renderer.h"
+#include "reference/reference_renderer.h"
 #include "scene/scene.h"
 
 #include <cstdint>

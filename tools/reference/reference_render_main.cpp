@@ -1,6 +1,6 @@
 // reference_render SCENE -o out.png [options]: the CPU reference renderer as a tool.
-#include "reference_renderer.h"
-#include "reference_story.h"
+#include "reference/reference_renderer.h"
+#include "reference/reference_story.h"
 #include "scene/scene_loader.h"
 #include "tool_arguments.h"
 

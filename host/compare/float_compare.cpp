@@ -1,4 +1,4 @@
-#include "float_compare.h"
+#include "compare/float_compare.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "ssim.h"
+#include "compare/ssim.h"
 
 #include <array>
 #include <cmath>

@@ -4,7 +4,7 @@
 // double precision, so tools/pixel_story can put the two side by side.
 #pragma once
 
-#include "reference_renderer.h"
+#include "reference/reference_renderer.h"
 #include "scene/scene.h"
 
 #include <glm/glm.hpp>

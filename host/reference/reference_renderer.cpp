@@ -31,8 +31,8 @@
 //
 // Speed: brute force over every primitive for every ray (no acceleration
 // structure that could itself be wrong), rows spread over threads (base/parallel.h).
-#include "reference_renderer.h"
-#include "reference_story.h"
+#include "reference/reference_renderer.h"
+#include "reference/reference_story.h"
 
 #include "base/parallel.h"
 #include "scene/scene_triangles.h"

@@ -1,6 +1,6 @@
 // referenceStoryJson (reference_story.h): the reference's story with the fields, names and
 // nesting of Raytracer --pixel (host/render/pixel_story_json.cpp), numbers to 17 digits.
-#include "reference_story.h"
+#include "reference/reference_story.h"
 
 #include "base/json.h"
 

@@ -1,4 +1,4 @@
-#include "image_compare.h"
+#include "compare/image_compare.h"
 
 #include <algorithm>
 #include <cmath>
