@@ -10,6 +10,7 @@
 #include "cli/output_pattern.h"
 #include "cli/render_settings.h"
 #include "cli/version.h"
+#include "compare_command.h"
 #include "gpu/cpu_driver.h"
 #include "gpu/device_list.h"
 #include "render/headless.h"
@@ -197,11 +198,14 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
 
 int main(int argc, char** argv) {
     const auto processStart = processStartTime();
+    const bool compare = argc >= 2 && std::string(argv[1]) == "compare";
     try {
+        if (compare) return runCompareCommand(std::vector<std::string>(argv + 2, argv + argc));
         return run(argc, argv, processStart);
     } catch (const UsageError& error) {
         // One line to the help, not the help itself, so that the error stays on screen.
-        std::cerr << "error: " << error.what() << "\n" << kSeeHelp;
+        std::cerr << "error: " << error.what() << "\n"
+                  << (compare ? "Run 'Raytracer compare --help' for its options.\n" : kSeeHelp);
         return kUsageError;
     } catch (const SceneError& error) {
         std::cerr << error.what() << '\n';

@@ -95,6 +95,28 @@ Image8 readImage8(const std::filesystem::path& path) {
     return image;
 }
 
+Image8 decodeImage8(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes,
+                    int maxSide) {
+    if (bytes.size() > std::size_t(std::numeric_limits<int>::max()))
+        fail(path, "the file is too large to decode");
+    const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+    const int size = int(bytes.size());
+    int width = 0, height = 0, channels = 0;
+    if (!stbi_info_from_memory(data, size, &width, &height, &channels))
+        fail(path, std::string("not a readable PNG or JPEG: ") + stbi_failure_reason());
+    if (width > maxSide || height > maxSide)
+        fail(path, "the image is " + std::to_string(width) + "x" + std::to_string(height) +
+                       ", over " + std::to_string(maxSide) + " pixels a side");
+    std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
+        stbi_load_from_memory(data, size, &width, &height, &channels, 4), &stbi_image_free);
+    if (!pixels) fail(path, std::string("not a readable PNG or JPEG: ") + stbi_failure_reason());
+    Image8 image;
+    image.width = width;
+    image.height = height;
+    image.rgba.assign(pixels.get(), pixels.get() + std::size_t(width) * std::size_t(height) * 4);
+    return image;
+}
+
 std::vector<std::uint8_t> encodePng(const std::filesystem::path& path, const Image8& image) {
     checkImage(path, image);
     std::vector<std::uint8_t> encoded;

@@ -20,6 +20,12 @@ Image8 readPng(const std::filesystem::path& path);
 // Throws std::runtime_error "PATH: REASON" if it can't.
 Image8 readImage8(const std::filesystem::path& path);
 
+// Decodes a PNG or JPEG file's bytes (PATH only names it in errors) as RGBA8. The size in
+// its header is checked first: over maxSide pixels a side is an error before any pixel
+// memory is reserved. Throws std::runtime_error "PATH: REASON".
+Image8 decodeImage8(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes,
+                    int maxSide);
+
 // The bytes of a file of each 8-bit format (PATH only names the file in an error): PNG;
 // baseline JPEG at quality 1 to 100 (stb); binary PPM ("P6", 8-bit RGB). Alpha is dropped
 // by JPEG and PPM; the renderer's is always 255.

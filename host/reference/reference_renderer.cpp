@@ -279,14 +279,19 @@ void storyColors(ReferenceStory& story) {
     }
 }
 
-// colour(ray, bounce) of docs/model.md's "Reflection": the path is followed forwards, then
-// (1 - ks) * local + ks * colour(next) is evaluated from the innermost bounce out,
-// the same arithmetic as the recursion without a stack frame per bounce. With story, each
-// bounce is recorded there too (the pixel story).
-dvec3 traceRay(const World& world, const ReferenceSettings& settings, Ray ray,
-               std::vector<Bounce>& path, ReferenceStory* story = nullptr) {
+// How a path ends: in the background, or on a surface that shades only locally (no
+// mirror, or the depth reached).
+struct PathEnd {
+    bool missed = false;
+    dvec3 local{0.0};
+};
+
+// Follows a ray through at most settings.depth reflections: each bounce that reflects goes
+// into path, and the bounce where the path stops is returned. With story, each bounce is
+// recorded there too (the pixel story).
+PathEnd followPath(const World& world, const ReferenceSettings& settings, Ray ray,
+                   std::vector<Bounce>& path, ReferenceStory* story) {
     path.clear();
-    dvec3 color = settings.background;
     for (int bounce = 0;; ++bounce) {
         Hit hit;
         StoryBounceRecord* record = nullptr;
@@ -296,9 +301,8 @@ dvec3 traceRay(const World& world, const ReferenceSettings& settings, Ray ray,
             record->direction = ray.dir;
         }
         if (!closestHit(world, ray, hit)) {
-            color = settings.background;
-            if (record) record->local = color; // next: "miss"
-            break;
+            if (record) record->local = settings.background; // next: "miss"
+            return {true, dvec3(0.0)};
         }
         const SurfacePoint p = surfaceAt(world, ray, hit);
         const dvec3 view = -glm::normalize(ray.dir);
@@ -315,17 +319,44 @@ dvec3 traceRay(const World& world, const ReferenceSettings& settings, Ray ray,
                            : bounce >= settings.depth ? "depth"
                                                       : "reflect";
         }
-        if (bounce >= settings.depth || ks == dvec3(0.0)) {
-            color = local;
-            break;
-        }
+        if (bounce >= settings.depth || ks == dvec3(0.0)) return {false, local};
         path.push_back({local, ks});
         const dvec3 reflected = ray.dir - 2.0 * glm::dot(ray.dir, p.normal) * p.normal;
         ray = Ray{p.position, glm::normalize(reflected), hit.id};
     }
+}
+
+// colour(ray, bounce) of docs/model.md's "Reflection": the path is followed forwards, then
+// (1 - ks) * local + ks * colour(next) is evaluated from the innermost bounce out,
+// the same arithmetic as the recursion without a stack frame per bounce.
+dvec3 traceRay(const World& world, const ReferenceSettings& settings, Ray ray,
+               std::vector<Bounce>& path, ReferenceStory* story = nullptr) {
+    const PathEnd end = followPath(world, settings, ray, path, story);
+    dvec3 color = end.missed ? settings.background : end.local;
     for (std::size_t k = path.size(); k-- > 0;)
         color = (1.0 - path[k].ks) * path[k].local + path[k].ks * color;
     return color;
+}
+
+// The path's terms for every depth up to the one traced (RayTerms): a depth d below the
+// bounces the path reflected at ends on bounce d's surface, which then shades only locally.
+RayTerms rayTerms(const World& world, const ReferenceSettings& settings, Ray ray,
+                  std::vector<Bounce>& path) {
+    const PathEnd end = followPath(world, settings, ray, path, nullptr);
+    RayTerms terms;
+    for (int depth = 0; depth <= settings.depth; ++depth) {
+        const std::size_t reflections = std::min(std::size_t(depth), path.size());
+        const bool last = reflections == path.size();
+        dvec3 own = last ? end.local : path[reflections].local;
+        dvec3 throughBackground(last && end.missed ? 1.0 : 0.0);
+        for (std::size_t k = reflections; k-- > 0;) {
+            own = (1.0 - path[k].ks) * path[k].local + path[k].ks * own;
+            throughBackground *= path[k].ks;
+        }
+        terms.own.push_back(own);
+        terms.throughBackground.push_back(throughBackground);
+    }
+    return terms;
 }
 
 struct Camera {
@@ -367,8 +398,10 @@ Camera makeCamera(const ReferenceSettings& settings) {
     while (settings.spp % rows != 0)
         --rows;
     const int cols = settings.spp / rows;
+    const double corner = settings.cornerRays ? 0.5 : 0.0;
     for (int k = 0; k < settings.spp; ++k)
-        camera.samples.emplace_back((k % cols + 0.5) / cols, (k / cols + 0.5) / rows);
+        camera.samples.emplace_back((k % cols + 0.5) / cols - corner,
+                                    (k / cols + 0.5) / rows - corner);
     return camera;
 }
 
@@ -391,7 +424,9 @@ dvec3 pixelColor(const World& world, const ReferenceSettings& settings, const Ca
     for (glm::dvec2 sample : camera.samples) {
         const dvec3 c =
             traceRay(world, settings, Ray{camera.eye, eyeDirection(camera, i, j, sample)}, path);
-        sum += dvec3(clampChannel(c.x), clampChannel(c.y), clampChannel(c.z));
+        sum += settings.clampSamples
+                   ? dvec3(clampChannel(c.x), clampChannel(c.y), clampChannel(c.z))
+                   : c;
     }
     return sum / double(camera.samples.size());
 }
@@ -429,6 +464,29 @@ glm::dvec3 tracePixel(const Scene& scene, const ReferenceSettings& settings, int
     const World world = prepareWorld(scene);
     std::vector<Bounce> path;
     return pixelColor(world, settings, camera, i, j, path);
+}
+
+std::vector<RayTerms> referenceTerms(const Scene& scene, const ReferenceSettings& settings,
+                                     const std::vector<glm::ivec2>& pixels, int threads) {
+    const Camera camera = makeCamera(settings);
+    if (settings.spp != 1)
+        throw std::invalid_argument("the terms of a pixel need one sample per pixel");
+    const World world = prepareWorld(scene);
+    std::vector<RayTerms> terms(pixels.size());
+    constexpr std::size_t kChunk = 256; // pixels a task: enough to outweigh starting it
+    parallelFor((pixels.size() + kChunk - 1) / kChunk,
+                [&](std::size_t chunk) {
+                    std::vector<Bounce> path;
+                    const std::size_t end = std::min(pixels.size(), (chunk + 1) * kChunk);
+                    for (std::size_t k = chunk * kChunk; k < end; ++k) {
+                        const glm::ivec2 pixel = pixels[k];
+                        const Ray ray{camera.eye, eyeDirection(camera, pixel.x, pixel.y,
+                                                               camera.samples.front())};
+                        terms[k] = rayTerms(world, settings, ray, path);
+                    }
+                },
+                unsigned(std::max(threads, 0)));
+    return terms;
 }
 
 namespace {

@@ -2,7 +2,7 @@
 # Every tool a user runs answers --help and -h with its usage (the first line starts with
 # "usage:") and exit status 0, and does nothing else: no build, no file written, neither
 # in the checkout nor in the working directory. The tools are found, not listed: every
-# executable file of tools/, tools/build/, tools/lib/ and tools/farm/, and the C++ tools built in
+# executable file of tools/, tools/build/, tools/lib/, tools/farm/ and tools/compare/, and the C++ tools built in
 # BUILD_TOOLS_DIR, so a new tool cannot be forgotten.
 #
 #   tools_help_test.sh SOURCE_DIR BUILD_TOOLS_DIR
@@ -15,7 +15,7 @@ fi
 root=$(cd "$1" && pwd)
 build_tools=$(cd "$2" && pwd)
 
-mapfile -t tools < <(find "$root/tools" "$root/tools/build" "$root/tools/lib" "$root/tools/farm" -maxdepth 1 -type f -executable |
+mapfile -t tools < <(find "$root/tools" "$root/tools/build" "$root/tools/lib" "$root/tools/farm" "$root/tools/compare" -maxdepth 1 -type f -executable |
     sort)
 mapfile -t built < <(find "$build_tools" -maxdepth 1 -type f -executable | sort)
 [[ -x $build_tools/image_diff ]] || { echo "FAIL: $build_tools holds no built tools (image_diff)"; exit 1; }
@@ -25,7 +25,7 @@ tools+=("${built[@]}")
 # (build-fuzz/, out/) and its tools/ folders, and the working directory.
 workdir=$(mktemp -d)
 trap 'rm -rf "$workdir"' EXIT
-snapshot() { ls -A "$root" "$root/tools" "$root/tools/build" "$root/tools/lib" "$root/tools/farm" "$build_tools"; }
+snapshot() { ls -A "$root" "$root/tools" "$root/tools/build" "$root/tools/lib" "$root/tools/farm" "$root/tools/compare" "$build_tools"; }
 before=$(snapshot)
 
 failures=0

@@ -16,12 +16,14 @@ packages=(
     libglfw3-dev libglm-dev libstb-dev
     libimgui-dev              # the window's overlay (Dear ImGui with its GLFW and Vulkan backends)
     libtinyexr-dev            # -o out.exr and image_diff's EXR input
+    libjpeg-dev               # compare: JPEG decoded, and re-encoded as the image was (libjpeg-turbo)
     googletest libgtest-dev
     xvfb xauth x11-utils x11-apps xdotool
     clang libclang-rt-14-dev  # make check-hardening: libFuzzer and the sanitizer build
     clang-format              # tools/format.sh --check, run by the suite
     python3-skimage           # the SSIM test's independent values (structural_similarity)
     parallel                  # GNU parallel: the farm recipe of docs/batches.md, tested locally
+    chromium                  # compare --report: the suite loads the page in headless Chromium
 )
 # Optional: the benchmark only. Raytracer and the tests never need them.
 bench_packages=(libembree-dev python3-matplotlib)

@@ -1,0 +1,191 @@
+#include "compare/compare_report.h"
+
+#include "base/json.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace {
+
+std::string fixed(double value, int decimals) {
+    char text[48];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    return text;
+}
+
+std::string levelsText(double levels) {
+    return shortNumber(levels) + "/255";
+}
+
+std::string verdictLine(const Comparison& c) {
+    switch (c.verdict) {
+    case Verdict::Matches:
+        return "matches";
+    case Verdict::MatchesWithGlobalSettings:
+        return "matches once its global differences are applied";
+    case Verdict::Differs:
+        break;
+    }
+    return "differs";
+}
+
+std::string regionLine(const MismatchRegion& r) {
+    const double mean = r.meanSignedDifference;
+    const std::string direction = std::abs(mean) < 0.5 ? "both darker and brighter"
+                                  : mean < 0 ? "darker by " + levelsText(std::round(-mean))
+                                             : "brighter by " + levelsText(std::round(mean));
+    return std::to_string(r.pixels) + (r.pixels == 1 ? " pixel" : " pixels") + " in x " +
+           std::to_string(r.left) + "-" + std::to_string(r.right) + ", y " + std::to_string(r.top) +
+           "-" + std::to_string(r.bottom) + ": " + direction +
+           (std::abs(mean) < 0.5 ? "" : " on average");
+}
+
+std::string settingsJson(const GlobalSettings& s) {
+    return "{\"depth\": " + std::to_string(s.depth) +
+           ", \"background\": " + jsonTriple(s.background, 6) +
+           ", \"fov\": " + jsonNumber(s.fovDegrees, 6) +
+           ", \"fov_axis\": " + jsonString(fovAxisName(s.fovAxis)) +
+           ", \"rays\": " + jsonString(rayPositionName(s.rays)) +
+           ", \"flip\": " + jsonString(flipName(s.flip)) +
+           ", \"gamma\": " + jsonNumber(s.gamma, 6) +
+           ", \"channels\": " + jsonString(channelOrderName(s.channels)) +
+           ", \"brightness\": " + jsonNumber(s.brightness, 6) +
+           ", \"quantize\": " + jsonString(quantizeName(s.quantize)) + "}";
+}
+
+std::string comparisonJson(const Comparison& c) {
+    const PixelMatch& m = c.match;
+    std::string regions;
+    for (std::size_t k = 0; k < std::min(kJsonRegions, m.regions.size()); ++k) {
+        const MismatchRegion& r = m.regions[k];
+        regions += std::string(k ? ", " : "") + "{\"left\": " + std::to_string(r.left) +
+                   ", \"top\": " + std::to_string(r.top) +
+                   ", \"right\": " + std::to_string(r.right) +
+                   ", \"bottom\": " + std::to_string(r.bottom) +
+                   ", \"pixels\": " + std::to_string(r.pixels) +
+                   ", \"mean_signed_difference\": " + jsonNumber(r.meanSignedDifference, 4) + "}";
+    }
+    const SearchResult& s = c.search;
+    return "{\"image\": " + jsonString(c.imagePath.string()) +
+           ", \"scene\": " + jsonString(c.scenePath.string()) +
+           ", \"format\": " + jsonString(formatName(c.image.format)) + ", \"jpeg_quality\": " +
+           (c.image.jpegQuality ? std::to_string(*c.image.jpegQuality) : "null") +
+           ", \"width\": " + std::to_string(m.width) + ", \"height\": " + std::to_string(m.height) +
+           ", \"verdict\": " + jsonString(verdictName(c.verdict)) +
+           ", \"tolerance\": " + jsonNumber(c.tolerance.levels, 6) +
+           ", \"tolerance_reason\": " + jsonString(c.tolerance.reason) +
+           ", \"matching_fraction\": " + jsonNumber(m.fractionMatching, 6) +
+           ", \"pixels\": " + std::to_string(m.pixels) +
+           ", \"matching_pixels\": " + std::to_string(m.matching) +
+           ", \"mean_absolute_difference\": " + jsonNumber(m.meanAbsoluteDifference, 4) +
+           ", \"settings\": " + settingsJson(c.settings) +
+           ", \"options\": " + jsonString(departureOptions(c.settings)) +
+           ", \"differences\": " + jsonString(departureWords(c.settings)) +
+           ", \"as_given_matching_fraction\": " + jsonNumber(c.asGivenFraction, 6) +
+           ", \"unconvincing\": " +
+           (c.unconvincing.empty()
+                ? std::string("null")
+                : "{\"options\": " + jsonString(c.unconvincing) +
+                      ", \"matching_fraction\": " + jsonNumber(c.unconvincingFraction, 6) + "}") +
+           ", \"search\": {\"candidates\": " + std::to_string(s.candidates) +
+           ", \"sample_pixels\": " + std::to_string(s.samplePixels) +
+           ", \"rays\": " + std::to_string(s.tracedRays) +
+           ", \"seconds\": " + jsonNumber(s.seconds) + "}" +
+           ", \"reference_seconds\": " + jsonNumber(c.renderSeconds) +
+           ", \"seconds\": " + jsonNumber(c.seconds) +
+           ", \"regions_total\": " + std::to_string(m.regions.size()) + ", \"regions\": [" +
+           regions + "]}";
+}
+
+} // namespace
+
+std::string percent(double fraction) {
+    std::string text = fixed(fraction * 100.0, 2);
+    if (text == "100.00" && fraction < 1) text = "99.99";
+    if (text == "0.00" && fraction > 0) text = "0.01";
+    return text + "%";
+}
+
+std::string compareText(const Comparison& c) {
+    const PixelMatch& m = c.match;
+    const SearchResult& s = c.search;
+    std::string out = c.imagePath.string() + " (" + formatName(c.image.format) + ", " +
+                      std::to_string(m.width) + "x" + std::to_string(m.height) + ") against " +
+                      c.scenePath.string() + "\n";
+    out += "verdict: " + verdictLine(c) + ": " + percent(m.fractionMatching) +
+           " of pixels within " + levelsText(c.tolerance.levels) + " (" + c.tolerance.reason +
+           "; a pixel also matches its neighbours' reference)\n";
+    const std::string options = departureOptions(c.settings);
+    if (options.empty()) {
+        out += "global differences: none found\n";
+    } else {
+        out += "global differences: " + departureWords(c.settings) + "\n";
+        out += "  your image matches the reference with `" + options + "` on " +
+               percent(m.fractionMatching) + " of pixels within " + levelsText(c.tolerance.levels) +
+               "; as given, on " + percent(c.asGivenFraction) + "\n";
+    }
+    if (!c.unconvincing.empty())
+        out += "  (the closest, `" + c.unconvincing + "`, reaches " +
+               percent(c.unconvincingFraction) + ": too little to explain the differences)\n";
+    out += "search: " + std::to_string(s.candidates) + " settings on " +
+           std::to_string(s.samplePixels) + " sampled pixels (" + std::to_string(s.tracedRays) +
+           " eye rays) in " + fixed(s.seconds, 2) + " s; the full reference in " +
+           fixed(c.renderSeconds, 2) + " s\n";
+    if (!m.regions.empty()) {
+        out += "where the rest is (worst first):\n";
+        long listed = 0;
+        for (std::size_t k = 0; k < std::min(kTextRegions, m.regions.size()); ++k) {
+            out += "  " + std::to_string(k + 1) + ". " + regionLine(m.regions[k]) + "\n";
+            listed += m.regions[k].pixels;
+        }
+        if (m.regions.size() > kTextRegions)
+            out += "  and " + std::to_string(m.regions.size() - kTextRegions) +
+                   " more regions of " + std::to_string(m.pixels - m.matching - listed) +
+                   " pixels in all\n";
+    }
+    return out;
+}
+
+std::string compareJson(const std::vector<Comparison>& comparisons,
+                        const std::vector<CompareFailure>& failures) {
+    std::string out = "{\"schema\": " + jsonString(kCompareSchema) +
+                      ", \"version\": " + std::to_string(kCompareSchemaVersion) + ", \"images\": [";
+    bool first = true;
+    for (const Comparison& c : comparisons) {
+        out += (first ? "\n  " : ",\n  ") + comparisonJson(c);
+        first = false;
+    }
+    for (const CompareFailure& f : failures) {
+        out += (first ? "\n  " : ",\n  ") + std::string("{\"image\": ") + jsonString(f.image) +
+               ", \"scene\": " + jsonString(f.scene) +
+               ", \"verdict\": \"error\", \"error\": " + jsonString(f.message) + "}";
+        first = false;
+    }
+    return out + "\n]}\n";
+}
+
+std::string folderTable(const std::vector<Comparison>& comparisons,
+                        const std::vector<CompareFailure>& failures) {
+    std::size_t nameWidth = 5;
+    for (const Comparison& c : comparisons)
+        nameWidth = std::max(nameWidth, c.imagePath.filename().string().size());
+    for (const CompareFailure& f : failures)
+        nameWidth = std::max(nameWidth, std::filesystem::path(f.image).filename().string().size());
+    auto pad = [](std::string text, std::size_t width) {
+        text.resize(std::max(width, text.size()), ' ');
+        return text;
+    };
+    std::string out = pad("image", nameWidth) + "  " + pad("verdict", 31) + "  " +
+                      pad("matching", 8) + "  global differences\n";
+    for (const Comparison& c : comparisons) {
+        const std::string options = departureOptions(c.settings);
+        out += pad(c.imagePath.filename().string(), nameWidth) + "  " +
+               pad(verdictName(c.verdict), 31) + "  " + pad(percent(c.match.fractionMatching), 8) +
+               "  " + (options.empty() ? "none" : options) + "\n";
+    }
+    for (const CompareFailure& f : failures)
+        out += pad(std::filesystem::path(f.image).filename().string(), nameWidth) + "  " +
+               pad("error", 31) + "  " + pad("-", 8) + "  " + f.message + "\n";
+    return out;
+}

@@ -1,0 +1,38 @@
+// What a comparison says: a short text for people (the verdict, the global differences
+// found, the share of matching pixels, where the rest is, worst first) and JSON for
+// graders (docs/compare.md has the schema). The HTML page is compare_page.h.
+#pragma once
+
+#include "compare/comparison.h"
+
+#include <string>
+#include <vector>
+
+// The JSON schema's name and version; the version changes when a field changes meaning or
+// goes away (new fields may be added within a version).
+inline constexpr const char* kCompareSchema = "raytracer-compare";
+inline constexpr int kCompareSchemaVersion = 1;
+
+// The regions the text lists; the JSON holds at most kJsonRegions.
+inline constexpr std::size_t kTextRegions = 5;
+inline constexpr std::size_t kJsonRegions = 100;
+
+std::string compareText(const Comparison& comparison);
+
+// One image of a folder that could not be compared: why.
+struct CompareFailure {
+    std::string image, scene, message;
+};
+
+// The whole report: {"schema", "version", "images": [...]}, one entry a comparison or
+// failure, in that order.
+std::string compareJson(const std::vector<Comparison>& comparisons,
+                        const std::vector<CompareFailure>& failures);
+
+// A folder's table: a line per image (verdict, matching share, global differences as
+// options), then the failures.
+std::string folderTable(const std::vector<Comparison>& comparisons,
+                        const std::vector<CompareFailure>& failures);
+
+// "99.98%": a share as a percentage that says 100% only when it is all, 0% only when none.
+std::string percent(double fraction);

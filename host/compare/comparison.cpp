@@ -1,0 +1,121 @@
+#include "compare/comparison.h"
+
+#include "compare/jpeg_codec.h"
+#include "reference/reference_renderer.h"
+
+#include <chrono>
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The image an image of width x height under settings should be (in its levels).
+ImageF expectedImage(const Scene& scene, const GlobalSettings& settings, const ImageF& like,
+                     int threads) {
+    ReferenceSettings reference = referenceSettingsFor(settings, like.width, like.height);
+    reference.clampSamples = false; // brightness comes before the clamp
+    return presentedImage(renderReferenceFloat(scene, reference, threads), settings);
+}
+
+// The image against expected. A JPEG is held against the reference written as it was
+// (jpeg_codec.h), so that both carry compression errors of the same kind.
+PixelMatch matchWith(const Comparison& comparison, const ImageF& expected) {
+    const ImageF& levels = comparison.image.levels;
+    if (comparison.image.jpegFile.empty())
+        return matchPixels(levels, expected, comparison.tolerance.levels);
+    return matchPixels(levels, throughJpegLike(expected, comparison.image.jpegFile),
+                       comparison.tolerance.levels);
+}
+
+} // namespace
+
+const char* verdictName(Verdict verdict) {
+    switch (verdict) {
+    case Verdict::Matches:
+        return "matches";
+    case Verdict::MatchesWithGlobalSettings:
+        return "matches-with-global-differences";
+    case Verdict::Differs:
+        return "differs";
+    }
+    return "differs";
+}
+
+ImageF presentedImage(const ImageF& reference, const GlobalSettings& settings) {
+    ImageF image;
+    image.width = reference.width;
+    image.height = reference.height;
+    image.rgb.resize(reference.rgb.size());
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const glm::ivec2 source =
+                referencePixel(settings.flip, x, y, image.width, image.height);
+            const float* from =
+                &reference.rgb[(std::size_t(source.y) * std::size_t(image.width) + source.x) * 3];
+            float* to = &image.rgb[(std::size_t(y) * std::size_t(image.width) + x) * 3];
+            for (std::size_t k = 0; k < 3; ++k)
+                to[k] = float(presentedLevel(settings, from[settings.channels[k]]));
+        }
+    return image;
+}
+
+Comparison compareWithReference(const std::filesystem::path& imagePath, HandedInImage image,
+                                const std::filesystem::path& scenePath, const Scene& scene,
+                                const CompareRequest& request) {
+    const auto start = std::chrono::steady_clock::now();
+    Comparison comparison;
+    comparison.imagePath = imagePath;
+    comparison.scenePath = scenePath;
+    comparison.image = std::move(image);
+    comparison.tolerance = toleranceFor(comparison.image);
+    if (request.tolerance) {
+        comparison.tolerance.levels = *request.tolerance;
+        comparison.tolerance.reason = "given with --tolerance";
+    }
+    const ImageF& levels = comparison.image.levels;
+    // The search tells settings apart by the share of pixels they get exactly right (an
+    // exact file) or within twice the tolerance (a JPEG, whose noise the reference does not
+    // carry in the search).
+    const double closeness =
+        isExactFormat(comparison.image.format) ? 0.5 : 2 * comparison.tolerance.levels;
+    comparison.search =
+        searchGlobalSettings(scene, levels, request.fixed, closeness, request.threads);
+    const auto renderStart = std::chrono::steady_clock::now();
+    comparison.settings = comparison.search.settings;
+    ImageF expected = expectedImage(scene, comparison.settings, levels, request.threads);
+    comparison.match = matchWith(comparison, expected);
+    const GlobalSettings given = givenSettings(request.fixed);
+    if (departures(comparison.settings) > departures(given)) {
+        // As given, on every pixel: the settings found must gain enough over it.
+        ImageF asGiven = expectedImage(scene, given, levels, request.threads);
+        PixelMatch asGivenMatch = matchWith(comparison, asGiven);
+        comparison.asGivenFraction = asGivenMatch.fractionMatching;
+        // Both within tolerance, a difference below it (truncation, say) counts when the
+        // settings found halve the mean difference.
+        const bool gains =
+            comparison.match.fractionMatching >=
+                asGivenMatch.fractionMatching + leastGain(asGivenMatch.fractionMatching) ||
+            (asGivenMatch.fractionMatching >= kMatchingFraction &&
+             comparison.match.meanAbsoluteDifference < 0.5 * asGivenMatch.meanAbsoluteDifference);
+        if (!gains) {
+            comparison.unconvincing = departureOptions(comparison.settings);
+            comparison.unconvincingFraction = comparison.match.fractionMatching;
+            comparison.settings = given;
+            expected = std::move(asGiven);
+            comparison.match = std::move(asGivenMatch);
+        }
+    } else {
+        comparison.asGivenFraction = comparison.match.fractionMatching;
+    }
+    comparison.expected = std::move(expected);
+    comparison.renderSeconds = secondsSince(renderStart);
+    const bool within = comparison.match.fractionMatching >= kMatchingFraction;
+    comparison.verdict = !within ? Verdict::Differs
+                         : departures(comparison.settings) == departures(given)
+                             ? Verdict::Matches
+                             : Verdict::MatchesWithGlobalSettings;
+    comparison.seconds = secondsSince(start);
+    return comparison;
+}

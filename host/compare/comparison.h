@@ -1,0 +1,68 @@
+// One handed-in image against the reference of its scene: the global search, then every
+// pixel against the reference under the settings found. The reports (compare_report.h)
+// say what came of it.
+#pragma once
+
+#include "compare/global_search.h"
+#include "compare/handed_in_image.h"
+#include "compare/pixel_match.h"
+#include "compare/tolerance.h"
+#include "scene/scene.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+enum class Verdict {
+    Matches,                   // as given: no global difference, and within tolerance
+    MatchesWithGlobalSettings, // within tolerance once the global differences are applied
+    Differs
+};
+const char* verdictName(Verdict verdict); // "matches", "matches-with-global-differences", "differs"
+
+// The share of pixels that must match for "matches".
+inline constexpr double kMatchingFraction = 0.995;
+
+// The share of all pixels that the global differences found must make match, over the
+// image as given, to be reported: 1% of all pixels and a tenth of those that do not match
+// as given. Less, and they explain nothing: an image of another scene, or one whose
+// mistakes are its own, can always be nudged a little.
+inline double leastGain(double asGivenFraction) {
+    return std::max(0.01, 0.1 * (1.0 - asGivenFraction));
+}
+
+struct Comparison {
+    std::filesystem::path imagePath, scenePath;
+    HandedInImage image;
+    Tolerance tolerance;
+    SearchResult search;
+    // The global settings the comparison holds the image to: the search's, or the settings
+    // as given when the search's gain too little (then unconvincing names them and
+    // unconvincingFraction says what share they reached).
+    GlobalSettings settings;
+    std::string unconvincing;
+    double unconvincingFraction = 0;
+    double asGivenFraction = 0; // the share of pixels matching as given
+    // The reference under the settings found, as the image should hold it: its
+    // orientation, channel order and levels.
+    ImageF expected;
+    PixelMatch match;
+    Verdict verdict = Verdict::Differs;
+    double renderSeconds = 0; // the full-size reference
+    double seconds = 0;       // everything, reading the image included
+};
+
+struct CompareRequest {
+    FixedSettings fixed;
+    std::optional<double> tolerance; // overrides the one the image's format gets
+    int threads = 0;
+};
+
+// The image in its levels, under settings: reference colours (unclamped) to levels, in
+// the image's orientation and channel order.
+ImageF presentedImage(const ImageF& reference, const GlobalSettings& settings);
+
+Comparison compareWithReference(const std::filesystem::path& imagePath, HandedInImage image,
+                                const std::filesystem::path& scenePath, const Scene& scene,
+                                const CompareRequest& request);
