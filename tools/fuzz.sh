@@ -2,7 +2,7 @@
 # Usage: tools/fuzz.sh [SECONDS]    (default 60)
 #
 # Fuzzes the scene parser with libFuzzer for a bounded time, then the OBJ model reader
-# for half that time; any crash, sanitizer report, leak, hang (-timeout) or out-of-memory
+# for half that time and the handed-in image readers (PPM, JPEG markers) for a quarter; any crash, sanitizer report, leak, hang (-timeout) or out-of-memory
 # (-rss_limit_mb, -malloc_limit_mb) fails with libFuzzer's non-zero status and leaves the
 # input that did it in build-fuzz/artifacts/. Commit such an input to
 # tests/fuzz/regressions/ (or tests/fuzz/obj_regressions/ for the OBJ reader): the
@@ -50,4 +50,7 @@ fuzz "scene parser" scene_parser_fuzz "$seconds" tests/fuzz/scene.dict "${seeds[
 # The OBJ reader for half as long: its grammar is smaller.
 fuzz "OBJ model reader" obj_model_fuzz $(((seconds + 1) / 2)) tests/fuzz/obj.dict \
     tests/fuzz/obj_seeds tests/fuzz/obj_regressions
+# The handed-in image readers (PPM, JPEG markers) for a quarter of the time.
+fuzz "image header readers" image_header_fuzz $(((seconds + 3) / 4)) tests/fuzz/image.dict \
+    tests/fuzz/image_seeds
 echo "fuzz: no crash, leak, hang or out-of-memory in ${seconds} s"

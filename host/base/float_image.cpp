@@ -73,21 +73,6 @@ void checkWritable(const std::filesystem::path& path, const ImageF& image) {
 
 } // namespace
 
-std::string printableText(std::string_view text) {
-    std::string out;
-    for (const char c : text) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (byte >= 0x20 && byte < 0x7f) {
-            out += c;
-        } else {
-            char escaped[8];
-            std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
-            out += escaped;
-        }
-    }
-    return out;
-}
-
 std::optional<ImageFormat> imageFormatOf(const std::filesystem::path& path) {
     std::string extension = path.extension().string();
     for (char& c : extension)

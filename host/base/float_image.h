@@ -4,6 +4,7 @@
 #pragma once
 
 #include "base/image_io.h"
+#include "base/printable_text.h"
 
 #include <filesystem>
 #include <optional>
@@ -46,6 +47,3 @@ void writeExr(const std::filesystem::path& path, const ImageF& image);
 // or pixel block, a non-finite value.
 ImageF readPfm(const std::filesystem::path& path);
 ImageF readExr(const std::filesystem::path& path);
-
-// Text taken from a damaged file, safe to print: bytes outside printable ASCII as \xNN.
-std::string printableText(std::string_view text);

@@ -1,5 +1,7 @@
 #include "base/ppm_image.h"
 
+#include "base/printable_text.h"
+
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -70,6 +72,10 @@ ImageF readPpm(const std::filesystem::path& path) {
                             std::istreambuf_iterator<char>());
     if (file.bad())
         throw std::runtime_error(path.string() + ": cannot read: " + std::strerror(errno));
+    return decodePpm(path, bytes);
+}
+
+ImageF decodePpm(const std::filesystem::path& path, const std::string& bytes) {
     PpmText text{path, bytes};
     if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != '3' && bytes[1] != '6'))
         text.fail("not a colour PPM: expected \"P3\" or \"P6\" at the start");

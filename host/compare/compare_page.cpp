@@ -69,9 +69,9 @@ constexpr const char* kStyle = R"(<style>
 body { font-family: sans-serif; margin: 1.5em; background: #fafafa; color: #222; }
 pre { background: #fff; border: 1px solid #ccc; padding: 0.8em; white-space: pre-wrap; }
 .images { display: flex; flex-wrap: wrap; gap: 1.5em; }
-figure { margin: 0; }
+figure { margin: 0; flex: 1 1 40%; max-width: 640px; }
 figcaption { margin-top: 0.3em; }
-img { image-rendering: pixelated; border: 1px solid #888; max-width: 100%; }
+img { image-rendering: pixelated; border: 1px solid #888; width: 100%; height: auto; }
 button { font-size: 1em; padding: 0.3em 0.8em; }
 table { border-collapse: collapse; }
 td, th { border: 1px solid #ccc; padding: 0.3em 0.6em; text-align: left; }
