@@ -1,7 +1,6 @@
 #include "compare_command.h"
 
 #include "base/image_io.h"
-#include "base/notes.h"
 #include "base/parallel.h"
 #include "cli/option_values.h"
 #include "cli/usage_error.h"
@@ -14,7 +13,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
-#include <map>
 #include <optional>
 
 namespace fs = std::filesystem;

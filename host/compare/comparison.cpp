@@ -11,12 +11,20 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The image an image of width x height under settings should be (in its levels).
-ImageF expectedImage(const Scene& scene, const GlobalSettings& settings, const ImageF& like,
-                     int threads) {
+// The reference's colours (unclamped: brightness comes before the clamp) for an image like
+// like under settings.
+ImageF referenceColours(const Scene& scene, const GlobalSettings& settings, const ImageF& like,
+                        int threads) {
     ReferenceSettings reference = referenceSettingsFor(settings, like.width, like.height);
-    reference.clampSamples = false; // brightness comes before the clamp
-    return presentedImage(renderReferenceFloat(scene, reference, threads), settings);
+    reference.clampSamples = false;
+    return renderReferenceFloat(scene, reference, threads);
+}
+
+// Whether two settings trace the same reference: the rest only changes how its colours
+// are presented.
+bool sameTrace(const GlobalSettings& a, const GlobalSettings& b) {
+    return a.depth == b.depth && a.background == b.background && a.fovDegrees == b.fovDegrees &&
+           a.fovAxis == b.fovAxis && a.rays == b.rays;
 }
 
 // The image against expected. A JPEG is held against the reference written as it was
@@ -84,12 +92,18 @@ Comparison compareWithReference(const std::filesystem::path& imagePath, HandedIn
         searchGlobalSettings(scene, levels, request.fixed, closeness, request.threads);
     const auto renderStart = std::chrono::steady_clock::now();
     comparison.settings = comparison.search.settings;
-    ImageF expected = expectedImage(scene, comparison.settings, levels, request.threads);
+    const ImageF colours = referenceColours(scene, comparison.settings, levels, request.threads);
+    ImageF expected = presentedImage(colours, comparison.settings);
     comparison.match = matchWith(comparison, expected);
     const GlobalSettings given = givenSettings(request.fixed);
     if (departures(comparison.settings) > departures(given)) {
-        // As given, on every pixel: the settings found must gain enough over it.
-        ImageF asGiven = expectedImage(scene, given, levels, request.threads);
+        // As given, on every pixel: the settings found must gain enough over it. A flip, a
+        // gamma or the like presents the same trace otherwise.
+        ImageF asGiven =
+            presentedImage(sameTrace(given, comparison.settings)
+                               ? colours
+                               : referenceColours(scene, given, levels, request.threads),
+                           given);
         PixelMatch asGivenMatch = matchWith(comparison, asGiven);
         comparison.asGivenFraction = asGivenMatch.fractionMatching;
         // Both within tolerance, a difference below it (truncation, say) counts when the
