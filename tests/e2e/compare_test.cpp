@@ -511,11 +511,14 @@ TEST(Compare, TheReportPageShowsTheImagesAndTextInABrowserWithoutAnError) {
               std::string::npos);
     EXPECT_EQ(consoleLines(dom.err), std::vector<std::string>{}) << dom.err;
 
-    // A screenshot shows the image (the red sphere's pixels) and the text (dark pixels).
+    // A screenshot shows the image (the red sphere's pixels) and the text (dark pixels). The
+    // virtual time lets the page finish painting before the shot, whatever the machine's
+    // speed (without it a large image could be caught half painted).
     const fs::path shot = dir / "screenshot.png";
-    const ProcessResult screenshot =
-        chromium(dir / "profile-shot", {"--screenshot=" + shot.string(), "--window-size=1280,1000"},
-                 report / "index.html");
+    const ProcessResult screenshot = chromium(
+        dir / "profile-shot",
+        {"--screenshot=" + shot.string(), "--window-size=1280,1000", "--virtual-time-budget=3000"},
+        report / "index.html");
     ASSERT_EQ(screenshot.exitCode, 0) << screenshot.err;
     EXPECT_EQ(consoleLines(screenshot.err), std::vector<std::string>{}) << screenshot.err;
     const Image8 image = readPng(shot);
