@@ -72,10 +72,13 @@ const ChoiceNames<Acceleration>& accelerationNames() {
 std::string usageText() {
     return "Usage: Raytracer SCENE [options]\n"
            "       Raytracer SCENE... -o 'out/{name}.png' [options]\n"
+           "       Raytracer compare IMAGE SCENE [options]   (Raytracer compare --help)\n"
            "Renders SCENE in a window (headless to a PNG when there is no display: STEM.png,\n"
            "or STEM-1.png, STEM-2.png, ... beside an earlier one, which is kept). SCENE is a\n"
            "scene file, or a Wavefront OBJ model (.obj, with its MTL materials). Several\n"
            "scenes, --turntable and --camera-path render a batch headless (docs/batches.md).\n"
+           "compare checks an image made by another ray tracer against the reference\n"
+           "(docs/compare.md).\n"
            "\n"
            "  -o, --output FILE     render headless and write FILE: .png, .jpg/.jpeg or .ppm\n"
            "                        (8-bit), or .pfm or .exr (float: each pixel before the\n"
