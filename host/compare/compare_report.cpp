@@ -30,6 +30,46 @@ std::string verdictLine(const Comparison& c) {
     return "differs";
 }
 
+// "the sphere of line 9 (80%), the triangle of line 30 (20%); in shadow 60%": what the
+// region's traced pixels lie on, the three largest shares.
+std::string factsText(const RegionFacts& f) {
+    if (f.traced == 0) return "";
+    auto share = [&](long n) {
+        return std::to_string(int(std::lround(100.0 * double(n) / double(f.traced)))) + "%";
+    };
+    // The objects and the background, the most pixels first.
+    std::vector<std::pair<long, std::string>> parts;
+    for (const RegionObject& o : f.objects)
+        parts.emplace_back(o.pixels, std::string("the ") + o.primitive.kind + " of line " +
+                                         std::to_string(o.primitive.line));
+    if (f.background > 0) parts.emplace_back(f.background, "the background");
+    std::stable_sort(parts.begin(), parts.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::string out = "on ";
+    for (std::size_t k = 0; k < std::min<std::size_t>(3, parts.size()); ++k)
+        out += std::string(k ? ", " : "") + parts[k].second + " (" + share(parts[k].first) + ")";
+    if (parts.size() > 3) out += " and " + std::to_string(parts.size() - 3) + " more";
+    if (f.inShadow > 0) out += "; in shadow " + share(f.inShadow);
+    if (f.onMirror > 0) out += "; on mirrors " + share(f.onMirror);
+    return out;
+}
+
+// The region's facts as JSON fields (a leading comma): the traced pixels, the objects and
+// the shares in shadow, on mirrors and on the background.
+std::string factsJson(const RegionFacts& f) {
+    std::string objects;
+    for (std::size_t k = 0; k < f.objects.size(); ++k)
+        objects += std::string(k ? ", " : "") +
+                   "{\"kind\": " + jsonString(f.objects[k].primitive.kind) +
+                   ", \"index\": " + std::to_string(f.objects[k].primitive.index) +
+                   ", \"line\": " + std::to_string(f.objects[k].primitive.line) +
+                   ", \"pixels\": " + std::to_string(f.objects[k].pixels) + "}";
+    return ", \"traced_pixels\": " + std::to_string(f.traced) + ", \"objects\": [" + objects +
+           "], \"background_pixels\": " + std::to_string(f.background) +
+           ", \"in_shadow_pixels\": " + std::to_string(f.inShadow) +
+           ", \"on_mirror_pixels\": " + std::to_string(f.onMirror);
+}
+
 std::string regionLine(const MismatchRegion& r) {
     const double mean = r.meanSignedDifference;
     const std::string direction = std::abs(mean) < 0.5 ? "both darker and brighter"
@@ -57,14 +97,15 @@ std::string settingsJson(const GlobalSettings& s) {
 std::string comparisonJson(const Comparison& c) {
     const PixelMatch& m = c.match;
     std::string regions;
-    for (std::size_t k = 0; k < std::min(kJsonRegions, m.regions.size()); ++k) {
+    for (std::size_t k = 0; k < std::min(kListedRegions, m.regions.size()); ++k) {
         const MismatchRegion& r = m.regions[k];
         regions += std::string(k ? ", " : "") + "{\"left\": " + std::to_string(r.left) +
                    ", \"top\": " + std::to_string(r.top) +
                    ", \"right\": " + std::to_string(r.right) +
                    ", \"bottom\": " + std::to_string(r.bottom) +
                    ", \"pixels\": " + std::to_string(r.pixels) +
-                   ", \"mean_signed_difference\": " + jsonNumber(r.meanSignedDifference, 4) + "}";
+                   ", \"mean_signed_difference\": " + jsonNumber(r.meanSignedDifference, 4) +
+                   (k < c.regionFacts.size() ? factsJson(c.regionFacts[k]) : std::string()) + "}";
     }
     const SearchResult& s = c.search;
     return "{\"image\": " + jsonString(c.imagePath.string()) +
@@ -137,6 +178,8 @@ std::string compareText(const Comparison& c) {
         long listed = 0;
         for (std::size_t k = 0; k < std::min(kTextRegions, m.regions.size()); ++k) {
             out += "  " + std::to_string(k + 1) + ". " + regionLine(m.regions[k]) + "\n";
+            if (k < c.regionFacts.size() && c.regionFacts[k].traced > 0)
+                out += "     " + factsText(c.regionFacts[k]) + "\n";
             listed += m.regions[k].pixels;
         }
         if (m.regions.size() > kTextRegions)

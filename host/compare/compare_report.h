@@ -13,9 +13,8 @@
 inline constexpr const char* kCompareSchema = "raytracer-compare";
 inline constexpr int kCompareSchemaVersion = 1;
 
-// The regions the text lists; the JSON holds at most kJsonRegions.
+// The regions the text lists; the JSON holds kListedRegions (comparison.h).
 inline constexpr std::size_t kTextRegions = 5;
-inline constexpr std::size_t kJsonRegions = 100;
 
 std::string compareText(const Comparison& comparison);
 

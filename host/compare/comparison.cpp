@@ -124,6 +124,8 @@ Comparison compareWithReference(const std::filesystem::path& imagePath, HandedIn
         comparison.asGivenFraction = comparison.match.fractionMatching;
     }
     comparison.expected = std::move(expected);
+    comparison.regionFacts =
+        regionFacts(scene, comparison.match, comparison.settings, kListedRegions, request.threads);
     comparison.renderSeconds = secondsSince(renderStart);
     const bool within = comparison.match.fractionMatching >= kMatchingFraction;
     comparison.verdict = !within ? Verdict::Differs

@@ -6,6 +6,7 @@
 #include "compare/global_search.h"
 #include "compare/handed_in_image.h"
 #include "compare/pixel_match.h"
+#include "compare/region_facts.h"
 #include "compare/tolerance.h"
 #include "scene/scene.h"
 
@@ -20,6 +21,9 @@ enum class Verdict {
     Differs
 };
 const char* verdictName(Verdict verdict); // "matches", "matches-with-global-differences", "differs"
+
+// The regions the reports describe in full (the JSON lists this many; the text fewer).
+inline constexpr std::size_t kListedRegions = 100;
 
 // The share of pixels that must match for "matches".
 inline constexpr double kMatchingFraction = 0.995;
@@ -48,6 +52,8 @@ struct Comparison {
     // orientation, channel order and levels.
     ImageF expected;
     PixelMatch match;
+    // What the first regions of match (as many as the JSON lists) lie on.
+    std::vector<RegionFacts> regionFacts;
     Verdict verdict = Verdict::Differs;
     double renderSeconds = 0; // the full-size reference
     double seconds = 0;       // everything, reading the image included

@@ -12,8 +12,9 @@ bool within(const float* a, const float* b, double tolerance) {
            std::abs(a[2] - b[2]) <= tolerance;
 }
 
-// Labels the 8-connected sets of non-matching pixels and measures each.
-std::vector<MismatchRegion> findRegions(const PixelMatch& match) {
+// Labels the 8-connected sets of non-matching pixels and measures each: the regions worst
+// first, and each pixel's index among them (-1 where it matches) in regionOf.
+std::vector<MismatchRegion> findRegions(const PixelMatch& match, std::vector<int>& regionOf) {
     const int w = match.width, h = match.height;
     std::vector<int> label(std::size_t(w) * std::size_t(h), -1);
     std::vector<MismatchRegion> regions;
@@ -50,11 +51,23 @@ std::vector<MismatchRegion> findRegions(const PixelMatch& match) {
         region.meanSignedDifference /= double(region.pixels);
         regions.push_back(region);
     }
-    std::stable_sort(regions.begin(), regions.end(),
-                     [](const MismatchRegion& a, const MismatchRegion& b) {
-                         return a.sumAbsoluteDifference > b.sumAbsoluteDifference;
-                     });
-    return regions;
+    std::vector<int> order(regions.size());
+    for (std::size_t k = 0; k < order.size(); ++k)
+        order[k] = int(k);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+        return regions[std::size_t(a)].sumAbsoluteDifference >
+               regions[std::size_t(b)].sumAbsoluteDifference;
+    });
+    std::vector<int> rank(regions.size());
+    std::vector<MismatchRegion> sorted;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        rank[std::size_t(order[k])] = int(k);
+        sorted.push_back(regions[std::size_t(order[k])]);
+    }
+    regionOf.assign(label.size(), -1);
+    for (std::size_t p = 0; p < label.size(); ++p)
+        if (label[p] >= 0) regionOf[p] = rank[std::size_t(label[p])];
+    return sorted;
 }
 
 } // namespace
@@ -96,6 +109,6 @@ PixelMatch matchPixels(const ImageF& image, const ImageF& expected, double toler
         }
     match.fractionMatching = double(match.matching) / double(std::max(match.pixels, 1L));
     match.meanAbsoluteDifference = absoluteSum / double(3 * std::max(match.pixels, 1L));
-    match.regions = findRegions(match);
+    match.regions = findRegions(match, match.regionOf);
     return match;
 }

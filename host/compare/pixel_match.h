@@ -27,6 +27,7 @@ struct PixelMatch {
     std::vector<float> signedDifference;
     std::vector<unsigned char> matches;
     std::vector<MismatchRegion> regions; // worst first: the largest sum of differences
+    std::vector<int> regionOf;           // per pixel: its index in regions, -1 if it matches
 };
 
 // image and expected: RGB levels 0..255 of the same size (std::invalid_argument if not).

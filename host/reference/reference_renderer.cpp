@@ -459,6 +459,40 @@ ReferenceStory referencePixelStory(const Scene& scene, const ReferenceSettings& 
     return story;
 }
 
+std::vector<EyeRayFacts> referenceEyeRays(const Scene& scene, const ReferenceSettings& settings,
+                                          const std::vector<glm::ivec2>& pixels, int threads) {
+    const Camera camera = makeCamera(settings);
+    const World world = prepareWorld(scene);
+    std::vector<EyeRayFacts> facts(pixels.size());
+    constexpr std::size_t kChunk = 256; // pixels a task: enough to outweigh starting it
+    parallelFor(
+        (pixels.size() + kChunk - 1) / kChunk,
+        [&](std::size_t chunk) {
+            const std::size_t end = std::min(pixels.size(), (chunk + 1) * kChunk);
+            for (std::size_t k = chunk * kChunk; k < end; ++k) {
+                const Ray ray{camera.eye, eyeDirection(camera, pixels[k].x, pixels[k].y,
+                                                       camera.samples.front())};
+                Hit hit;
+                if (!closestHit(world, ray, hit)) continue;
+                const SurfacePoint p = surfaceAt(world, ray, hit);
+                EyeRayFacts& out = facts[k];
+                out.hit = storyPrimitive(world, hit.id);
+                out.onMirror = settings.depth > 0 && p.material.specular != dvec3(0.0);
+                for (const Light& light : scene.lights) {
+                    const dvec3 toLight = light.position - p.position;
+                    const double distance = glm::length(toLight);
+                    if (distance == 0 || glm::dot(p.normal, toLight) <= 0) continue;
+                    if (occluded(world, Ray{p.position, toLight / distance, hit.id}, distance)) {
+                        out.inShadow = true;
+                        break;
+                    }
+                }
+            }
+        },
+        unsigned(std::max(threads, 0)));
+    return facts;
+}
+
 glm::dvec3 tracePixel(const Scene& scene, const ReferenceSettings& settings, int i, int j) {
     const Camera camera = makeCamera(settings);
     const World world = prepareWorld(scene);

@@ -52,6 +52,19 @@ struct ReferenceStory {
 ReferenceStory referencePixelStory(const Scene& scene, const ReferenceSettings& settings, int i,
                                    int j);
 
+// What the eye ray of a pixel meets, in short: for telling what a region of an image lies on
+// (compare's regions) without a whole story per pixel.
+struct EyeRayFacts {
+    StoryPrimitive hit;    // kind "none": the ray meets only the background
+    bool inShadow = false; // a light faces the point and something blocks it
+    bool onMirror = false; // the point reflects (ks > 0) and the depth allows a bounce
+};
+
+// The facts of sample 0's eye ray of each pixel (i, j) of pixels. Throws as
+// renderReference does for settings it refuses.
+std::vector<EyeRayFacts> referenceEyeRays(const Scene& scene, const ReferenceSettings& settings,
+                                          const std::vector<glm::ivec2>& pixels, int threads = 0);
+
 // The story as one JSON object with Raytracer --pixel's fields ("renderer": "reference").
 std::string referenceStoryJson(const ReferenceStory& story, const Scene& scene,
                                const ReferenceSettings& settings, const std::string& scenePath,

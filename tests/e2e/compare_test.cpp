@@ -571,3 +571,38 @@ TEST(Compare, AnImageOfAnotherSceneIsNotExplainedBySettings) {
     EXPECT_EQ(jsonText(run.out, "options"), "") << run.out;
     EXPECT_LT(jsonValue(run.out, "matching_fraction"), 0.9) << run.out;
 }
+
+TEST(Compare, ARegionSaysWhatItLiesOn) {
+    const fs::path dir = freshOutputDir("compare/region_facts");
+    const fs::path scenePath = writeScene(dir);
+    const Scene scene = loadScene(scenePath);
+    Image8 image = bytesOf(renderReferenceFloat(scene, defaults()), unchanged);
+    // The first sphere (line 9 of the scene), centre (-1.2, -0.3, -4), radius 0.8, lies
+    // around pixel (98, 136) of 320x240 (x / -z over tan 30 degrees times the aspect);
+    // a 10x10 block of it is made darker by 60 levels.
+    for (int y = 131; y < 141; ++y)
+        for (int x = 93; x < 103; ++x)
+            for (int k = 0; k < 3; ++k) {
+                std::uint8_t& byte =
+                    image.rgba[(std::size_t(y) * std::size_t(kWidth) + std::size_t(x)) * 4 +
+                               std::size_t(k)];
+                byte = std::uint8_t(std::max(0, byte - 60));
+            }
+    writePng(dir / "mine.png", image);
+    const ProcessResult json = compare(dir / "mine.png", scenePath, {"--json"});
+    ASSERT_EQ(json.exitCode, 0) << json.err;
+    EXPECT_NE(json.out.find("\"left\": 93, \"top\": 131, \"right\": 102, \"bottom\": 140, "
+                            "\"pixels\": 100"),
+              std::string::npos)
+        << json.out;
+    EXPECT_NE(json.out.find("\"traced_pixels\": 100, \"objects\": [{\"kind\": \"sphere\", "
+                            "\"index\": 0, \"line\": 9, \"pixels\": 100}], "
+                            "\"background_pixels\": 0"),
+              std::string::npos)
+        << json.out;
+    const ProcessResult text = compare(dir / "mine.png", scenePath);
+    EXPECT_NE(text.out.find("1. 100 pixels in x 93-102, y 131-140: darker by 60/255 on average\n"
+                            "     on the sphere of line 9 (100%)"),
+              std::string::npos)
+        << text.out;
+}
