@@ -11,6 +11,7 @@
 #include "scene/scene_loader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <iostream>
 #include <optional>

@@ -13,8 +13,6 @@
 #include <string>
 #include <vector>
 
-#include <memory>
-
 namespace {
 
 constexpr int kMaxSide = 16384;
