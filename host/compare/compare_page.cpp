@@ -1,5 +1,6 @@
 #include "compare/compare_page.h"
 
+#include "base/json.h"
 #include "compare/compare_report.h"
 
 #include <algorithm>
@@ -73,6 +74,11 @@ figure { margin: 0; flex: 1 1 40%; max-width: 640px; }
 figcaption { margin-top: 0.3em; }
 img { image-rendering: pixelated; border: 1px solid #888; width: 100%; height: auto; }
 button { font-size: 1em; padding: 0.3em 0.8em; }
+.heat { position: relative; line-height: 0; }
+.region { position: absolute; box-sizing: border-box; border: 2px solid #e8a000; min-width: 6px;
+          min-height: 6px; }
+.region span { position: absolute; left: -2px; top: -1.4em; line-height: 1.2em;
+               background: #e8a000; color: #000; font-size: 12px; padding: 0 0.3em; }
 table { border-collapse: collapse; }
 td, th { border: 1px solid #ccc; padding: 0.3em 0.6em; text-align: left; }
 </style>)";
@@ -99,6 +105,22 @@ constexpr const char* kFlipScript = R"(<script>
   document.body.dataset.ready = "yes";
 })();
 </script>)";
+
+// The regions the text lists, as numbered boxes over the heat map: placed in percent of
+// the image, so they stay on their pixels at any displayed size.
+std::string regionOutlines(const PixelMatch& match) {
+    std::string boxes;
+    auto percentOf = [](double value, int size) { return jsonNumber(100.0 * value / size, 6); };
+    for (std::size_t k = 0; k < std::min(kTextRegions, match.regions.size()); ++k) {
+        const MismatchRegion& r = match.regions[k];
+        boxes += "<div class=\"region\" style=\"left:" + percentOf(r.left, match.width) +
+                 "%;top:" + percentOf(r.top, match.height) +
+                 "%;width:" + percentOf(r.right - r.left + 1, match.width) +
+                 "%;height:" + percentOf(r.bottom - r.top + 1, match.height) + "%\"><span>" +
+                 std::to_string(k + 1) + "</span></div>\n";
+    }
+    return boxes;
+}
 
 } // namespace
 
@@ -147,11 +169,12 @@ std::string comparisonPage(const Comparison& c) {
             "\">\n<figcaption><button id=\"flip-button\" "
             "type=\"button\">Flip</button> (or F) showing <span id=\"flip-label\">your "
             "image</span></figcaption>\n</figure>\n";
-    page += "<figure>\n<img id=\"heatmap\" alt=\"the difference\" src=\"" +
-            pngData(differenceHeatmap(c.match)) +
-            "\">\n<figcaption>the difference: <span style=\"color:#00c\">blue</span> where "
+    page += "<figure>\n<div class=\"heat\">\n<img id=\"heatmap\" alt=\"the difference\" src=\"" +
+            pngData(differenceHeatmap(c.match)) + "\">\n" + regionOutlines(c.match) +
+            "</div>\n<figcaption>the difference: <span style=\"color:#00c\">blue</span> where "
             "your image is darker, <span style=\"color:#c00\">red</span> where it is brighter, "
-            "grey where it matches</figcaption>\n</figure>\n</div>\n";
+            "grey where it matches; the regions the report lists are outlined and "
+            "numbered</figcaption>\n</figure>\n</div>\n";
     page += "<p>The reference is the scene under the global settings found (" +
             escapeHtml(departureOptions(c.settings).empty() ? std::string("the defaults")
                                                             : departureOptions(c.settings)) +

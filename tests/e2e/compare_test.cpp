@@ -600,9 +600,15 @@ TEST(Compare, ARegionSaysWhatItLiesOn) {
                             "\"background_pixels\": 0"),
               std::string::npos)
         << json.out;
-    const ProcessResult text = compare(dir / "mine.png", scenePath);
+    const ProcessResult text =
+        compare(dir / "mine.png", scenePath, {"--report", (dir / "report").string()});
     EXPECT_NE(text.out.find("1. 100 pixels in x 93-102, y 131-140: darker by 60/255 on average\n"
                             "     on the sphere of line 9 (100%)"),
               std::string::npos)
         << text.out;
+    // The page outlines it on the heat map, in percent of the image: 93/320, 131/240, ...
+    EXPECT_NE(readWholeFile(dir / "report" / "index.html")
+                  .find("<div class=\"region\" style=\"left:29.0625%;top:54.5833%;width:3.125%;"
+                        "height:4.16667%\"><span>1</span></div>"),
+              std::string::npos);
 }
