@@ -1,0 +1,146 @@
+#include "compare/student_model.h"
+
+#include "base/parallel.h"
+#include "reference/reference_geometry.h"
+#include "scene/scene_triangles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+using namespace reference_geometry;
+
+namespace {
+
+// The surface as a tracer with mistake sees it: the reference's point, with the normal or
+// the material of a triangle taken the wrong way when that is the mistake.
+SurfacePoint studentSurface(const World& world, const Ray& ray, const Hit& hit, Mistake mistake) {
+    SurfacePoint p = surfaceAt(world, ray, hit);
+    if (hit.id < world.sphereCount) return p;
+    if (mistake != Mistake::FlatNormals && mistake != Mistake::MaterialsNotInterpolated) return p;
+    const Triangle tri = triangleAt(world.scene, std::size_t(hit.id - world.sphereCount));
+    const Vertex* v = tri.vertices;
+    if (mistake == Mistake::FlatNormals) {
+        p.normal = glm::normalize(
+            glm::cross(v[1].position - v[0].position, v[2].position - v[0].position));
+        if (glm::dot(p.normal, ray.dir) > 0) p.normal = -p.normal;
+    } else {
+        p.material = v[0].material;
+    }
+    return p;
+}
+
+// Phong with hard shadows as docs/model.md's "Shading" has it, but for mistake.
+dvec3 studentLocal(const World& world, const SurfacePoint& p, dvec3 view, int id, Mistake mistake) {
+    const Material& m = p.material;
+    const Scene& scene = world.scene;
+    dvec3 local = scene.ambient;
+    if (mistake == Mistake::AmbientPerLight)
+        local = scene.ambient * double(std::max<std::size_t>(scene.lights.size(), 1));
+    for (const Light& light : scene.lights) {
+        const dvec3 toLight = light.position - p.position;
+        const double distance = glm::length(toLight);
+        if (distance == 0) continue;
+        const dvec3 l = toLight / distance;
+        const double nl = glm::dot(p.normal, l);
+        if (nl <= 0) {
+            if (mistake == Mistake::UnclampedNDotL) local += light.color * m.diffuse * nl;
+            continue;
+        }
+        const bool shadowed =
+            mistake != Mistake::NoShadows &&
+            occluded(world, Ray{p.position, l, id},
+                     mistake == Mistake::ShadowIgnoresDistance ? infinity : distance);
+        double highlight = 0;
+        if (mistake == Mistake::BlinnPhong) {
+            const double nh = glm::dot(p.normal, glm::normalize(l + view));
+            highlight = nh > 0 ? std::pow(nh, m.shininess) : 0.0;
+        } else {
+            const double rv = glm::dot(2.0 * nl * p.normal - l, view);
+            highlight = rv > 0 ? std::pow(rv, m.shininess) : 0.0;
+        }
+        if (shadowed) {
+            if (mistake == Mistake::SpecularInShadow)
+                local += light.color * (m.specular * highlight);
+            continue;
+        }
+        local += light.color * (m.diffuse * nl + m.specular * highlight);
+    }
+    return local;
+}
+
+struct Bounce {
+    dvec3 local, ks;
+};
+
+// The recursion of docs/model.md's "Reflection", folded from the innermost bounce out as
+// the reference does, with the local colours of studentLocal.
+dvec3 studentRay(const World& world, const ReferenceSettings& settings, Ray ray, Mistake mistake,
+                 std::vector<Bounce>& path) {
+    path.clear();
+    dvec3 color = settings.background;
+    for (int bounce = 0;; ++bounce) {
+        Hit hit;
+        if (!closestHit(world, ray, hit)) {
+            color = settings.background;
+            break;
+        }
+        const SurfacePoint p = studentSurface(world, ray, hit, mistake);
+        const dvec3 local = studentLocal(world, p, -glm::normalize(ray.dir), hit.id, mistake);
+        const dvec3 ks = p.material.specular;
+        if (bounce >= settings.depth || ks == dvec3(0.0)) {
+            color = local;
+            break;
+        }
+        path.push_back({local, ks});
+        const dvec3 reflected = ray.dir - 2.0 * glm::dot(ray.dir, p.normal) * p.normal;
+        ray = Ray{p.position, glm::normalize(reflected), hit.id};
+    }
+    for (std::size_t k = path.size(); k-- > 0;)
+        color = (1.0 - path[k].ks) * path[k].local + path[k].ks * color;
+    return color;
+}
+
+} // namespace
+
+const std::vector<MistakeDescription>& mistakeCatalogue() {
+    static const std::vector<MistakeDescription> catalogue = {
+        {Mistake::NoShadows, "no-shadows", "no shadows: shadow rays are never cast"},
+        {Mistake::ShadowIgnoresDistance, "shadow-ignores-distance",
+         "shadows ignore the light's distance: a surface beyond the light still blocks it"},
+        {Mistake::SpecularInShadow, "specular-in-shadow", "the highlight is added in shadow too"},
+        {Mistake::BlinnPhong, "blinn-phong",
+         "Blinn-Phong highlights, (N.H)^n, instead of Phong's (R.V)^n"},
+        {Mistake::UnclampedNDotL, "unclamped-n-dot-l",
+         "N.L not clamped at zero: lights behind a surface darken it"},
+        {Mistake::AmbientPerLight, "ambient-per-light",
+         "the ambient term is added once per light, not once"},
+        {Mistake::FlatNormals, "flat-normals",
+         "triangles shaded with their flat normal, not the interpolated vertex normals"},
+        {Mistake::MaterialsNotInterpolated, "materials-not-interpolated",
+         "a triangle's material taken from its first corner, not interpolated"},
+    };
+    return catalogue;
+}
+
+std::vector<glm::dvec3> studentColours(const Scene& scene, const ReferenceSettings& settings,
+                                       Mistake mistake, const std::vector<glm::ivec2>& pixels,
+                                       int threads) {
+    const Camera camera = makeCamera(settings);
+    if (settings.spp != 1) throw std::invalid_argument("the student model traces one sample");
+    const World world = prepareWorld(scene);
+    std::vector<glm::dvec3> colours(pixels.size());
+    constexpr std::size_t kChunk = 256; // pixels a task: enough to outweigh starting it
+    parallelFor((pixels.size() + kChunk - 1) / kChunk,
+                [&](std::size_t chunk) {
+                    std::vector<Bounce> path;
+                    const std::size_t end = std::min(pixels.size(), (chunk + 1) * kChunk);
+                    for (std::size_t k = chunk * kChunk; k < end; ++k) {
+                        const Ray ray{camera.eye, eyeDirection(camera, pixels[k].x, pixels[k].y,
+                                                               camera.samples.front())};
+                        colours[k] = studentRay(world, settings, ray, mistake, path);
+                    }
+                },
+                unsigned(std::max(threads, 0)));
+    return colours;
+}
