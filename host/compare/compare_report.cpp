@@ -54,6 +54,36 @@ std::string factsText(const RegionFacts& f) {
     return out;
 }
 
+// "cause: no shadows: ... (95% of its pixels match with it, 0% without)", or that no
+// mistake of the catalogue explains it, with the closest.
+std::string diagnosisText(const RegionDiagnosis& d) {
+    auto share = [](double s) { return std::to_string(int(std::lround(100.0 * s))) + "%"; };
+    if (d.cause)
+        return std::string("cause: ") + d.cause->mistake->words + " (" + share(d.cause->share) +
+               " of its pixels match with this mistake, " + share(d.referenceShare) + " without)";
+    std::string out = "cause: not explained by any known mistake";
+    if (!d.trials.empty())
+        out += std::string(" (the closest, ") + d.trials.front().mistake->name + ", matches " +
+               share(d.trials.front().share) + " of its pixels)";
+    return out;
+}
+
+// The diagnosis as JSON fields (a leading comma): the cause (null when none explains it),
+// the reference's share and every mistake's.
+std::string diagnosisJson(const RegionDiagnosis& d) {
+    std::string trials;
+    for (std::size_t k = 0; k < d.trials.size(); ++k)
+        trials += std::string(k ? ", " : "") +
+                  "{\"mistake\": " + jsonString(d.trials[k].mistake->name) +
+                  ", \"matching_fraction\": " + jsonNumber(d.trials[k].share, 4) + "}";
+    return ", \"cause\": " + (d.cause ? jsonString(d.cause->mistake->name) : std::string("null")) +
+           ", \"cause_words\": " +
+           (d.cause ? jsonString(d.cause->mistake->words) : std::string("null")) +
+           ", \"diagnosed_pixels\": " + std::to_string(d.traced) +
+           ", \"reference_matching_fraction\": " + jsonNumber(d.referenceShare, 4) +
+           ", \"mistakes\": [" + trials + "]";
+}
+
 // The region's facts as JSON fields (a leading comma): the traced pixels, the objects and
 // the shares in shadow, on mirrors and on the background.
 std::string factsJson(const RegionFacts& f) {
@@ -105,7 +135,8 @@ std::string comparisonJson(const Comparison& c) {
                    ", \"bottom\": " + std::to_string(r.bottom) +
                    ", \"pixels\": " + std::to_string(r.pixels) +
                    ", \"mean_signed_difference\": " + jsonNumber(r.meanSignedDifference, 4) +
-                   (k < c.regionFacts.size() ? factsJson(c.regionFacts[k]) : std::string()) + "}";
+                   (k < c.regionFacts.size() ? factsJson(c.regionFacts[k]) : std::string()) +
+                   (k < c.diagnoses.size() ? diagnosisJson(c.diagnoses[k]) : std::string()) + "}";
     }
     const SearchResult& s = c.search;
     return "{\"image\": " + jsonString(c.imagePath.string()) +
@@ -134,6 +165,7 @@ std::string comparisonJson(const Comparison& c) {
            ", \"rays\": " + std::to_string(s.tracedRays) +
            ", \"seconds\": " + jsonNumber(s.seconds) + "}" +
            ", \"reference_seconds\": " + jsonNumber(c.renderSeconds) +
+           ", \"diagnosis_seconds\": " + jsonNumber(c.diagnosisSeconds) +
            ", \"seconds\": " + jsonNumber(c.seconds) +
            ", \"regions_total\": " + std::to_string(m.regions.size()) + ", \"regions\": [" +
            regions + "]}";
@@ -172,7 +204,8 @@ std::string compareText(const Comparison& c) {
     out += "search: " + std::to_string(s.candidates) + " settings on " +
            std::to_string(s.samplePixels) + " sampled pixels (" + std::to_string(s.tracedRays) +
            " eye rays) in " + fixed(s.seconds, 2) + " s; the full reference in " +
-           fixed(c.renderSeconds, 2) + " s\n";
+           fixed(c.renderSeconds, 2) + " s; the regions' causes in " +
+           fixed(c.diagnosisSeconds, 2) + " s\n";
     if (!m.regions.empty()) {
         out += "where the rest is (worst first):\n";
         long listed = 0;
@@ -180,6 +213,8 @@ std::string compareText(const Comparison& c) {
             out += "  " + std::to_string(k + 1) + ". " + regionLine(m.regions[k]) + "\n";
             if (k < c.regionFacts.size() && c.regionFacts[k].traced > 0)
                 out += "     " + factsText(c.regionFacts[k]) + "\n";
+            if (k < c.diagnoses.size() && c.diagnoses[k].traced > 0)
+                out += "     " + diagnosisText(c.diagnoses[k]) + "\n";
             listed += m.regions[k].pixels;
         }
         if (m.regions.size() > kTextRegions)

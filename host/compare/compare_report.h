@@ -13,8 +13,8 @@
 inline constexpr const char* kCompareSchema = "raytracer-compare";
 inline constexpr int kCompareSchemaVersion = 1;
 
-// The regions the text lists; the JSON holds kListedRegions (comparison.h).
-inline constexpr std::size_t kTextRegions = 5;
+// The regions the text lists (and diagnoses); the JSON holds kListedRegions (comparison.h).
+inline constexpr std::size_t kTextRegions = kDiagnosedRegions;
 
 std::string compareText(const Comparison& comparison);
 

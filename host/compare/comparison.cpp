@@ -124,9 +124,16 @@ Comparison compareWithReference(const std::filesystem::path& imagePath, HandedIn
         comparison.asGivenFraction = comparison.match.fractionMatching;
     }
     comparison.expected = std::move(expected);
+    comparison.renderSeconds = secondsSince(renderStart);
+    const auto diagnosisStart = std::chrono::steady_clock::now();
     comparison.regionFacts =
         regionFacts(scene, comparison.match, comparison.settings, kListedRegions, request.threads);
-    comparison.renderSeconds = secondsSince(renderStart);
+    // A JPEG's noise is not in the model's colours: held as the search holds it.
+    comparison.diagnoses = diagnoseRegions(
+        scene, comparison.match, levels, comparison.settings,
+        isExactFormat(comparison.image.format) ? comparison.tolerance.levels : closeness,
+        kDiagnosedRegions, request.threads);
+    comparison.diagnosisSeconds = secondsSince(diagnosisStart);
     const bool within = comparison.match.fractionMatching >= kMatchingFraction;
     comparison.verdict = !within ? Verdict::Differs
                          : departures(comparison.settings) == departures(given)

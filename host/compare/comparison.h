@@ -3,6 +3,7 @@
 // say what came of it.
 #pragma once
 
+#include "compare/diagnosis.h"
 #include "compare/global_search.h"
 #include "compare/handed_in_image.h"
 #include "compare/pixel_match.h"
@@ -24,6 +25,8 @@ const char* verdictName(Verdict verdict); // "matches", "matches-with-global-dif
 
 // The regions the reports describe in full (the JSON lists this many; the text fewer).
 inline constexpr std::size_t kListedRegions = 100;
+// The regions whose cause is looked for among the classic mistakes (the text lists them).
+inline constexpr std::size_t kDiagnosedRegions = 5;
 
 // The share of pixels that must match for "matches".
 inline constexpr double kMatchingFraction = 0.995;
@@ -54,9 +57,12 @@ struct Comparison {
     PixelMatch match;
     // What the first regions of match (as many as the JSON lists) lie on.
     std::vector<RegionFacts> regionFacts;
+    // Which classic mistake explains each of the first regions (as many as the text lists).
+    std::vector<RegionDiagnosis> diagnoses;
     Verdict verdict = Verdict::Differs;
-    double renderSeconds = 0; // the full-size reference
-    double seconds = 0;       // everything, reading the image included
+    double renderSeconds = 0;    // the full-size reference
+    double diagnosisSeconds = 0; // what the regions lie on, and their causes
+    double seconds = 0;          // everything, reading the image included
 };
 
 struct CompareRequest {

@@ -13,6 +13,7 @@
 #include "base/image_io.h"
 #include "compare/jpeg_codec.h"
 #include "compare/jpeg_file.h"
+#include "compare/student_model.h"
 #include "reference/reference_renderer.h"
 #include "scene/scene_loader.h"
 
@@ -606,9 +607,52 @@ TEST(Compare, ARegionSaysWhatItLiesOn) {
                             "     on the sphere of line 9 (100%)"),
               std::string::npos)
         << text.out;
+    // No mistake of the catalogue darkens a block of a sphere: said so, no cause invented.
+    EXPECT_NE(text.out.find("     cause: not explained by any known mistake"), std::string::npos)
+        << text.out;
     // The page outlines it on the heat map, in percent of the image: 93/320, 131/240, ...
     EXPECT_NE(readWholeFile(dir / "report" / "index.html")
                   .find("<div class=\"region\" style=\"left:29.0625%;top:54.5833%;width:3.125%;"
                         "height:4.16667%\"><span>1</span></div>"),
               std::string::npos);
+}
+
+namespace {
+
+// The test scene as a tracer with mistake renders it (host/compare/student_model.h), bytes
+// rounded as the reference rounds them.
+Image8 withMistake(const Scene& scene, Mistake mistake) {
+    std::vector<glm::ivec2> pixels;
+    for (int j = 0; j < kHeight; ++j)
+        for (int i = 0; i < kWidth; ++i)
+            pixels.emplace_back(i, j);
+    const std::vector<glm::dvec3> colours = studentColours(scene, defaults(), mistake, pixels);
+    ImageF image;
+    image.width = kWidth;
+    image.height = kHeight;
+    for (const glm::dvec3& c : colours)
+        image.rgb.insert(image.rgb.end(), {float(c.x), float(c.y), float(c.z)});
+    return bytesOf(image, unchanged);
+}
+
+} // namespace
+
+TEST(Compare, ARegionMadeByAClassicMistakeIsDiagnosedAsThatMistake) {
+    const fs::path dir = freshOutputDir("compare/diagnosis");
+    const fs::path scenePath = writeScene(dir);
+    const Scene scene = loadScene(scenePath);
+    for (const MistakeDescription& entry : mistakeCatalogue()) {
+        if (entry.mistake != Mistake::NoShadows && entry.mistake != Mistake::BlinnPhong &&
+            entry.mistake != Mistake::SpecularInShadow)
+            continue;
+        SCOPED_TRACE(entry.name);
+        const fs::path image = dir / (std::string(entry.name) + ".png");
+        writePng(image, withMistake(scene, entry.mistake));
+        const ProcessResult run = compare(image, scenePath, {"--json"});
+        ASSERT_EQ(run.exitCode, 0) << run.err;
+        EXPECT_EQ(jsonText(run.out, "cause"), entry.name) << run.out;
+        const ProcessResult text = compare(image, scenePath);
+        EXPECT_NE(text.out.find(std::string("cause: ") + entry.words), std::string::npos)
+            << text.out;
+    }
 }

@@ -1,0 +1,77 @@
+#include "compare/diagnosis.h"
+
+#include "reference/reference_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace {
+
+constexpr long kDiagnosedPerRegion = 2000; // a larger region is sampled evenly
+
+// Whether the image's pixel shows colour (a reference colour, unclamped) as an image under
+// settings would, within closeness.
+bool shows(const float* pixel, const glm::dvec3& colour, const GlobalSettings& settings,
+           double closeness) {
+    for (std::size_t k = 0; k < 3; ++k)
+        if (std::abs(presentedLevel(settings, colour[settings.channels[k]]) - pixel[k]) > closeness)
+            return false;
+    return true;
+}
+
+} // namespace
+
+std::vector<RegionDiagnosis> diagnoseRegions(const Scene& scene, const PixelMatch& match,
+                                             const ImageF& image, const GlobalSettings& settings,
+                                             double closeness, std::size_t count, int threads) {
+    const std::size_t regions = std::min(count, match.regions.size());
+    std::vector<RegionDiagnosis> diagnoses(regions);
+    if (regions == 0) return diagnoses;
+    // The pixels to trace: every one of a region, or an even sample of a large one.
+    std::vector<long> step(regions), seen(regions, 0);
+    for (std::size_t r = 0; r < regions; ++r)
+        step[r] = (match.regions[r].pixels + kDiagnosedPerRegion - 1) / kDiagnosedPerRegion;
+    std::vector<glm::ivec2> traced; // in the reference's frame
+    std::vector<std::size_t> at;    // the pixel's index in the image
+    std::vector<int> regionOf;
+    for (std::size_t p = 0; p < match.regionOf.size(); ++p) {
+        const int r = match.regionOf[p];
+        if (r < 0 || std::size_t(r) >= regions) continue;
+        if (seen[std::size_t(r)]++ % step[std::size_t(r)] != 0) continue;
+        const int x = int(p % std::size_t(match.width)), y = int(p / std::size_t(match.width));
+        traced.push_back(referencePixel(settings.flip, x, y, match.width, match.height));
+        at.push_back(p);
+        regionOf.push_back(r);
+    }
+    ReferenceSettings reference = referenceSettingsFor(settings, match.width, match.height);
+    // Each region's share of pixels that match with these colours.
+    auto shares = [&](const std::vector<glm::dvec3>& colours) {
+        std::vector<long> matching(regions, 0);
+        for (std::size_t k = 0; k < colours.size(); ++k)
+            matching[std::size_t(regionOf[k])] +=
+                shows(&image.rgb[at[k] * 3], colours[k], settings, closeness);
+        return matching;
+    };
+    const std::vector<long> plain =
+        shares(studentColours(scene, reference, Mistake::None, traced, threads));
+    for (std::size_t k = 0; k < traced.size(); ++k)
+        ++diagnoses[std::size_t(regionOf[k])].traced;
+    for (std::size_t r = 0; r < regions; ++r)
+        diagnoses[r].referenceShare = double(plain[r]) / double(std::max(diagnoses[r].traced, 1L));
+    for (const MistakeDescription& mistake : mistakeCatalogue()) {
+        const std::vector<long> matching =
+            shares(studentColours(scene, reference, mistake.mistake, traced, threads));
+        for (std::size_t r = 0; r < regions; ++r)
+            diagnoses[r].trials.push_back(
+                {&mistake, double(matching[r]) / double(std::max(diagnoses[r].traced, 1L))});
+    }
+    for (RegionDiagnosis& d : diagnoses) {
+        std::stable_sort(
+            d.trials.begin(), d.trials.end(),
+            [](const MistakeTrial& a, const MistakeTrial& b) { return a.share > b.share; });
+        if (!d.trials.empty() && d.trials.front().share >= kExplainingShare &&
+            d.trials.front().share >= d.referenceShare + 0.4)
+            d.cause = d.trials.front();
+    }
+    return diagnoses;
+}
