@@ -61,6 +61,10 @@ std::string diagnosisText(const RegionDiagnosis& d) {
     if (d.cause)
         return std::string("cause: ") + d.cause->mistake->words + " (" + share(d.cause->share) +
                " of its pixels match with this mistake, " + share(d.referenceShare) + " without)";
+    if (d.referenceShare >= kExplainingShare)
+        return "cause: none needed: within " + levelsText(d.closeness) +
+               " the reference itself matches " + share(d.referenceShare) +
+               " of its pixels (compression or edge noise)";
     std::string out = "cause: not explained by any known mistake";
     if (!d.trials.empty())
         out += std::string(" (the closest, ") + d.trials.front().mistake->name + ", matches " +

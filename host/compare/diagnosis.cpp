@@ -56,6 +56,8 @@ std::vector<RegionDiagnosis> diagnoseRegions(const Scene& scene, const PixelMatc
         shares(studentColours(scene, reference, Mistake::None, traced, threads));
     for (std::size_t k = 0; k < traced.size(); ++k)
         ++diagnoses[std::size_t(regionOf[k])].traced;
+    for (RegionDiagnosis& d : diagnoses)
+        d.closeness = closeness;
     for (std::size_t r = 0; r < regions; ++r)
         diagnoses[r].referenceShare = double(plain[r]) / double(std::max(diagnoses[r].traced, 1L));
     for (const MistakeDescription& mistake : mistakeCatalogue()) {

@@ -25,6 +25,7 @@ struct MistakeTrial {
 
 struct RegionDiagnosis {
     long traced = 0;                  // the region's pixels traced (all, or an even sample)
+    double closeness = 0;             // the levels a channel may be off and match, here
     double referenceShare = 0;        // those that match the reference's colour directly
     std::vector<MistakeTrial> trials; // every mistake, the best first
     // The cause: the best trial when it explains the region, else none.

@@ -17,10 +17,16 @@ namespace {
 SurfacePoint studentSurface(const World& world, const Ray& ray, const Hit& hit, Mistake mistake) {
     SurfacePoint p = surfaceAt(world, ray, hit);
     if (hit.id < world.sphereCount) return p;
-    if (mistake != Mistake::FlatNormals && mistake != Mistake::MaterialsNotInterpolated) return p;
+    if (mistake != Mistake::FlatNormals && mistake != Mistake::MaterialsNotInterpolated &&
+        mistake != Mistake::NormalsNotNormalised)
+        return p;
     const Triangle tri = triangleAt(world.scene, std::size_t(hit.id - world.sphereCount));
     const Vertex* v = tri.vertices;
-    if (mistake == Mistake::FlatNormals) {
+    if (mistake == Mistake::NormalsNotNormalised) {
+        const dvec3 w = hit.weights;
+        const dvec3 n = w.x * v[0].normal + w.y * v[1].normal + w.z * v[2].normal;
+        if (n != dvec3(0.0)) p.normal = glm::dot(n, ray.dir) > 0 ? -n : n;
+    } else if (mistake == Mistake::FlatNormals) {
         p.normal = glm::normalize(
             glm::cross(v[1].position - v[0].position, v[2].position - v[0].position));
         if (glm::dot(p.normal, ray.dir) > 0) p.normal = -p.normal;
@@ -47,9 +53,12 @@ dvec3 studentLocal(const World& world, const SurfacePoint& p, dvec3 view, int id
             if (mistake == Mistake::UnclampedNDotL) local += light.color * m.diffuse * nl;
             continue;
         }
+        // Shadow acne: the shadow ray does not skip the surface it leaves, so rounding can
+        // find it again a hair's breadth away.
+        const Ray shadowRay{p.position, l, mistake == Mistake::ShadowAcne ? fromEye : id};
         const bool shadowed =
             mistake != Mistake::NoShadows &&
-            occluded(world, Ray{p.position, l, id},
+            occluded(world, shadowRay,
                      mistake == Mistake::ShadowIgnoresDistance ? infinity : distance);
         double highlight = 0;
         if (mistake == Mistake::BlinnPhong) {
@@ -57,7 +66,8 @@ dvec3 studentLocal(const World& world, const SurfacePoint& p, dvec3 view, int id
             highlight = nh > 0 ? std::pow(nh, m.shininess) : 0.0;
         } else {
             const double rv = glm::dot(2.0 * nl * p.normal - l, view);
-            highlight = rv > 0 ? std::pow(rv, m.shininess) : 0.0;
+            highlight =
+                rv > 0 || mistake == Mistake::UnclampedRDotV ? std::pow(rv, m.shininess) : 0.0;
         }
         if (shadowed) {
             if (mistake == Mistake::SpecularInShadow)
@@ -86,7 +96,8 @@ dvec3 studentRay(const World& world, const ReferenceSettings& settings, Ray ray,
             break;
         }
         const SurfacePoint p = studentSurface(world, ray, hit, mistake);
-        const dvec3 local = studentLocal(world, p, -glm::normalize(ray.dir), hit.id, mistake);
+        dvec3 local = studentLocal(world, p, -glm::normalize(ray.dir), hit.id, mistake);
+        if (mistake == Mistake::ColourClampedPerBounce) local = glm::clamp(local, 0.0, 1.0);
         const dvec3 ks = p.material.specular;
         if (bounce >= settings.depth || ks == dvec3(0.0)) {
             color = local;
@@ -96,8 +107,10 @@ dvec3 studentRay(const World& world, const ReferenceSettings& settings, Ray ray,
         const dvec3 reflected = ray.dir - 2.0 * glm::dot(ray.dir, p.normal) * p.normal;
         ray = Ray{p.position, glm::normalize(reflected), hit.id};
     }
-    for (std::size_t k = path.size(); k-- > 0;)
-        color = (1.0 - path[k].ks) * path[k].local + path[k].ks * color;
+    for (std::size_t k = path.size(); k-- > 0;) {
+        const dvec3 keep = mistake == Mistake::ReflectionAdded ? dvec3(1.0) : 1.0 - path[k].ks;
+        color = keep * path[k].local + path[k].ks * color;
+    }
     return color;
 }
 
@@ -119,6 +132,16 @@ const std::vector<MistakeDescription>& mistakeCatalogue() {
          "triangles shaded with their flat normal, not the interpolated vertex normals"},
         {Mistake::MaterialsNotInterpolated, "materials-not-interpolated",
          "a triangle's material taken from its first corner, not interpolated"},
+        {Mistake::UnclampedRDotV, "unclamped-r-dot-v",
+         "R.V not clamped at zero: highlights where the reflection points away"},
+        {Mistake::NormalsNotNormalised, "normals-not-normalised",
+         "interpolated normals not normalised: triangles darker between their corners"},
+        {Mistake::ShadowAcne, "shadow-acne",
+         "shadow acne: shadow rays start on the surface and hit it again"},
+        {Mistake::ReflectionAdded, "reflection-added",
+         "the reflection added to the local colour instead of blended with weight ks"},
+        {Mistake::ColourClampedPerBounce, "colour-clamped-per-bounce",
+         "each bounce's colour clamped before the reflections are blended"},
     };
     return catalogue;
 }

@@ -16,14 +16,19 @@
 
 enum class Mistake {
     None,
-    NoShadows,               // shadow rays are never cast
-    ShadowIgnoresDistance,   // a surface beyond the light still casts its shadow
-    SpecularInShadow,        // in shadow, the highlight is still added
-    BlinnPhong,              // (N.H)^n instead of (R.V)^n
-    UnclampedNDotL,          // lights behind the surface darken it
-    AmbientPerLight,         // the ambient term added once per light
-    FlatNormals,             // a triangle's geometric normal, not its interpolated one
-    MaterialsNotInterpolated // a triangle's first corner's material everywhere on it
+    NoShadows,                // shadow rays are never cast
+    ShadowIgnoresDistance,    // a surface beyond the light still casts its shadow
+    SpecularInShadow,         // in shadow, the highlight is still added
+    BlinnPhong,               // (N.H)^n instead of (R.V)^n
+    UnclampedNDotL,           // lights behind the surface darken it
+    AmbientPerLight,          // the ambient term added once per light
+    FlatNormals,              // a triangle's geometric normal, not its interpolated one
+    MaterialsNotInterpolated, // a triangle's first corner's material everywhere on it
+    UnclampedRDotV,           // (R.V)^n taken when R.V < 0 too
+    NormalsNotNormalised,     // the interpolated normal used at its interpolated length
+    ShadowAcne,               // shadow rays start on the surface and may hit it again
+    ReflectionAdded,          // local + ks * reflected, not (1 - ks) * local + ks * reflected
+    ColourClampedPerBounce    // each bounce's local colour clamped to [0, 1] before the blend
 };
 
 struct MistakeDescription {

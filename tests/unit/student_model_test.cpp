@@ -1,6 +1,6 @@
 // The model of another tracer (host/compare/student_model.h): with no mistake it is the
 // reference, to the bit, on every pixel; each mistake of its catalogue changes a scene made
-// to show it, where the mistake says it should.
+// to show it; ambient per light adds exactly what it should.
 #include "compare/student_model.h"
 #include "scene/scene_loader.h"
 
@@ -11,17 +11,23 @@
 
 namespace {
 
-// A floor whose highlight from the first light, seen at (0, -1, -2) (the light mirrored in
+// A floor whose highlight from the light above it, seen at (0, -1, -2) (the light mirrored in
 // the floor, seen from the eye), lies in the shadow of the first sphere, halfway between
 // that point and the light; a second sphere beyond the light from the floor below it (a
 // shadow only for a tracer that ignores the light's distance); a light under the floor
 // (N.L < 0 there); the floor's corners with tilted normals and their own materials; a
-// second triangle and the spheres for the highlights' shape.
-constexpr const char* kScene = R"(6
+// second triangle and the spheres for the highlights' shape; the light above bright enough
+// that local colours pass 1 before reflections are blended, and even shininess on the floor
+// so that an unclamped R.V lights it where the reflection of a light beside the eye points
+// away from it.
+constexpr const char* kScene = R"(7
 amb: 0.1 0.1 0.1
 light
+pos: 2 1 0
+col: 0.3 0.3 0.3
+light
 pos: 0 2 -8
-col: 0.6 0.6 0.6
+col: 1.5 1.5 1.5
 light
 pos: 0 -3 -5
 col: 0.4 0.4 0.4
@@ -39,20 +45,20 @@ spe: 0 0 0
 shi: 1
 triangle
 pos: -4 -1 -1
-nor: 0.3 1 0
+nor: 0.8 1 0
 dif: 0.8 0.2 0.2
 spe: 0.5 0.5 0.5
-shi: 4
+shi: 2
 pos: 4 -1 -1
-nor: -0.3 1 0.2
+nor: -0.8 1 0.5
 dif: 0.2 0.8 0.2
 spe: 0.5 0.5 0.5
-shi: 4
+shi: 2
 pos: 0 -1 -10
-nor: 0 1 -0.3
+nor: 0 1 -0.8
 dif: 0.2 0.2 0.8
 spe: 0.5 0.5 0.5
-shi: 4
+shi: 2
 triangle
 pos: 1 -0.5 -6
 nor: 0 0 1
@@ -124,8 +130,8 @@ TEST(StudentModel, EachMistakeChangesTheSceneMadeToShowIt) {
 }
 
 TEST(StudentModel, AmbientPerLightAddsTheAmbientOncePerExtraLight) {
-    // Where neither light reaches (the floor in the first sphere's shadow, the second light
-    // under the floor), the colour is the ambient alone: doubled with two lights.
+    // Ambient per light adds the ambient once more for each light after the first, wherever
+    // the point is (here on the floor in the first sphere's shadow).
     const Scene scene = parseScene(kScene, "model.scene");
     ReferenceSettings s = settings();
     s.depth = 0;
@@ -134,6 +140,7 @@ TEST(StudentModel, AmbientPerLightAddsTheAmbientOncePerExtraLight) {
     const glm::dvec3 wrong = studentColours(scene, s, Mistake::AmbientPerLight, {shadow}).front();
     const glm::dvec3 noShadow = studentColours(scene, s, Mistake::NoShadows, {shadow}).front();
     EXPECT_GT(noShadow.x, right.x + 0.05) << "the pixel is not in the sphere's shadow";
+    const double extra = 0.1 * double(scene.lights.size() - 1);
     for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(wrong[c] - right[c], 0.1, 1e-12);
+        EXPECT_NEAR(wrong[c] - right[c], extra, 1e-12);
 }
