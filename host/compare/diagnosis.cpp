@@ -1,5 +1,7 @@
 #include "compare/diagnosis.h"
 
+#include "compare/region_facts.h"
+
 #include "reference/reference_renderer.h"
 
 #include <algorithm>
@@ -27,42 +29,27 @@ std::vector<RegionDiagnosis> diagnoseRegions(const Scene& scene, const PixelMatc
     const std::size_t regions = std::min(count, match.regions.size());
     std::vector<RegionDiagnosis> diagnoses(regions);
     if (regions == 0) return diagnoses;
-    // The pixels to trace: every one of a region, or an even sample of a large one.
-    std::vector<long> step(regions), seen(regions, 0);
-    for (std::size_t r = 0; r < regions; ++r)
-        step[r] = (match.regions[r].pixels + kDiagnosedPerRegion - 1) / kDiagnosedPerRegion;
-    std::vector<glm::ivec2> traced; // in the reference's frame
-    std::vector<std::size_t> at;    // the pixel's index in the image
-    std::vector<int> regionOf;
-    for (std::size_t p = 0; p < match.regionOf.size(); ++p) {
-        const int r = match.regionOf[p];
-        if (r < 0 || std::size_t(r) >= regions) continue;
-        if (seen[std::size_t(r)]++ % step[std::size_t(r)] != 0) continue;
-        const int x = int(p % std::size_t(match.width)), y = int(p / std::size_t(match.width));
-        traced.push_back(referencePixel(settings.flip, x, y, match.width, match.height));
-        at.push_back(p);
-        regionOf.push_back(r);
-    }
+    const RegionSample sample = sampleRegions(match, settings.flip, count, kDiagnosedPerRegion);
     ReferenceSettings reference = referenceSettingsFor(settings, match.width, match.height);
     // Each region's share of pixels that match with these colours.
     auto shares = [&](const std::vector<glm::dvec3>& colours) {
         std::vector<long> matching(regions, 0);
         for (std::size_t k = 0; k < colours.size(); ++k)
-            matching[std::size_t(regionOf[k])] +=
-                shows(&image.rgb[at[k] * 3], colours[k], settings, closeness);
+            matching[std::size_t(sample.region[k])] +=
+                shows(&image.rgb[sample.at[k] * 3], colours[k], settings, closeness);
         return matching;
     };
     const std::vector<long> plain =
-        shares(studentColours(scene, reference, Mistake::None, traced, threads));
-    for (std::size_t k = 0; k < traced.size(); ++k)
-        ++diagnoses[std::size_t(regionOf[k])].traced;
+        shares(studentColours(scene, reference, Mistake::None, sample.reference, threads));
+    for (int r : sample.region)
+        ++diagnoses[std::size_t(r)].traced;
     for (RegionDiagnosis& d : diagnoses)
         d.closeness = closeness;
     for (std::size_t r = 0; r < regions; ++r)
         diagnoses[r].referenceShare = double(plain[r]) / double(std::max(diagnoses[r].traced, 1L));
     for (const MistakeDescription& mistake : mistakeCatalogue()) {
         const std::vector<long> matching =
-            shares(studentColours(scene, reference, mistake.mistake, traced, threads));
+            shares(studentColours(scene, reference, mistake.mistake, sample.reference, threads));
         for (std::size_t r = 0; r < regions; ++r)
             diagnoses[r].trials.push_back(
                 {&mistake, double(matching[r]) / double(std::max(diagnoses[r].traced, 1L))});

@@ -38,19 +38,6 @@ bool startsWith(const std::vector<std::uint8_t>& bytes, std::initializer_list<in
     return true;
 }
 
-// PNG through stb (base/image_io.h), the size from the header first.
-ImageF decodeWithStb(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes) {
-    const Image8 decoded = decodeImage8(path, bytes, kMaxSide);
-    ImageF image;
-    image.width = decoded.width;
-    image.height = decoded.height;
-    image.rgb.resize(std::size_t(decoded.width) * std::size_t(decoded.height) * 3);
-    for (std::size_t p = 0; p < image.rgb.size() / 3; ++p)
-        for (std::size_t c = 0; c < 3; ++c)
-            image.rgb[3 * p + c] = decoded.rgba[4 * p + c];
-    return image;
-}
-
 ImageF timesLevels(ImageF image) {
     for (float& value : image.rgb)
         value *= 255.0f;
@@ -83,7 +70,7 @@ HandedInImage readHandedInImage(const std::filesystem::path& path) {
     HandedInImage image;
     if (startsWith(bytes, {0x89, 'P', 'N', 'G'})) {
         image.format = HandedInFormat::Png;
-        image.levels = decodeWithStb(path, bytes);
+        image.levels = imageFromBytes(decodeImage8(path, bytes, kMaxSide));
     } else if (startsWith(bytes, {0xFF, 0xD8})) {
         image.format = HandedInFormat::Jpeg;
         image.jpegQuality = readJpegFacts(path, bytes).quality;

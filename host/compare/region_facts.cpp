@@ -3,29 +3,35 @@
 #include <algorithm>
 #include <string>
 
-std::vector<RegionFacts> regionFacts(const Scene& scene, const PixelMatch& match,
-                                     const GlobalSettings& settings, std::size_t count,
-                                     int threads) {
+RegionSample sampleRegions(const PixelMatch& match, Flip flip, std::size_t count, long perRegion) {
     const std::size_t regions = std::min(count, match.regions.size());
-    // Every pixel of a region, or every step-th pixel of a large one (in image order).
     std::vector<long> step(regions), seen(regions, 0);
     for (std::size_t r = 0; r < regions; ++r)
-        step[r] = (match.regions[r].pixels + kTracedPerRegion - 1) / kTracedPerRegion;
-    std::vector<glm::ivec2> pixels;
-    std::vector<int> regionOfPixel;
+        step[r] = (match.regions[r].pixels + perRegion - 1) / perRegion;
+    RegionSample sample;
     for (std::size_t p = 0; p < match.regionOf.size(); ++p) {
         const int r = match.regionOf[p];
         if (r < 0 || std::size_t(r) >= regions) continue;
         if (seen[std::size_t(r)]++ % step[std::size_t(r)] != 0) continue;
         const int x = int(p % std::size_t(match.width)), y = int(p / std::size_t(match.width));
-        pixels.push_back(referencePixel(settings.flip, x, y, match.width, match.height));
-        regionOfPixel.push_back(r);
+        sample.at.push_back(p);
+        sample.reference.push_back(referencePixel(flip, x, y, match.width, match.height));
+        sample.region.push_back(r);
     }
-    const std::vector<EyeRayFacts> rays = referenceEyeRays(
-        scene, referenceSettingsFor(settings, match.width, match.height), pixels, threads);
+    return sample;
+}
+
+std::vector<RegionFacts> regionFacts(const Scene& scene, const PixelMatch& match,
+                                     const GlobalSettings& settings, std::size_t count,
+                                     int threads) {
+    const std::size_t regions = std::min(count, match.regions.size());
+    const RegionSample sample = sampleRegions(match, settings.flip, count, kTracedPerRegion);
+    const std::vector<EyeRayFacts> rays =
+        referenceEyeRays(scene, referenceSettingsFor(settings, match.width, match.height),
+                         sample.reference, threads);
     std::vector<RegionFacts> facts(regions);
     for (std::size_t k = 0; k < rays.size(); ++k) {
-        RegionFacts& f = facts[std::size_t(regionOfPixel[k])];
+        RegionFacts& f = facts[std::size_t(sample.region[k])];
         const EyeRayFacts& ray = rays[k];
         ++f.traced;
         if (std::string(ray.hit.kind) == "none") {

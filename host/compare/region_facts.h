@@ -22,6 +22,15 @@ struct RegionFacts {
     long background = 0, inShadow = 0, onMirror = 0;
 };
 
+// Pixels of match's first `count` regions: every pixel of a region, or an even sample of
+// perRegion of a larger one, in image order.
+struct RegionSample {
+    std::vector<std::size_t> at;       // the pixel's index in the image
+    std::vector<glm::ivec2> reference; // the same pixel in the reference's frame (under flip)
+    std::vector<int> region;           // its region
+};
+RegionSample sampleRegions(const PixelMatch& match, Flip flip, std::size_t count, long perRegion);
+
 // The facts of match's first `count` regions (at most), under settings (the image's
 // orientation maps its pixels to the reference's). A region of more than
 // kTracedPerRegion pixels is sampled evenly.

@@ -1,6 +1,5 @@
 #include "compare/student_model.h"
 
-#include "base/parallel.h"
 #include "reference/reference_geometry.h"
 #include "scene/scene_triangles.h"
 
@@ -153,17 +152,10 @@ std::vector<glm::dvec3> studentColours(const Scene& scene, const ReferenceSettin
     if (settings.spp != 1) throw std::invalid_argument("the student model traces one sample");
     const World world = prepareWorld(scene);
     std::vector<glm::dvec3> colours(pixels.size());
-    constexpr std::size_t kChunk = 256; // pixels a task: enough to outweigh starting it
-    parallelFor((pixels.size() + kChunk - 1) / kChunk,
-                [&](std::size_t chunk) {
-                    std::vector<Bounce> path;
-                    const std::size_t end = std::min(pixels.size(), (chunk + 1) * kChunk);
-                    for (std::size_t k = chunk * kChunk; k < end; ++k) {
-                        const Ray ray{camera.eye, eyeDirection(camera, pixels[k].x, pixels[k].y,
-                                                               camera.samples.front())};
-                        colours[k] = studentRay(world, settings, ray, mistake, path);
-                    }
-                },
-                unsigned(std::max(threads, 0)));
+    forEachEyeRay(camera, pixels, threads, [&]() -> EyeRayBody {
+        return [&, path = std::vector<Bounce>()](std::size_t k, const Ray& ray) mutable {
+            colours[k] = studentRay(world, settings, ray, mistake, path);
+        };
+    });
     return colours;
 }

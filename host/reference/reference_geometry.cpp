@@ -1,7 +1,9 @@
 #include "reference/reference_geometry.h"
 
+#include "base/parallel.h"
 #include "scene/scene_triangles.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -177,6 +179,22 @@ dvec3 eyeDirection(const Camera& camera, int i, int j, glm::dvec2 sample) {
     const double x = (2.0 * (i + sample.x) / camera.width - 1.0) * camera.tanHalfX;
     const double y = (1.0 - 2.0 * (j + sample.y) / camera.height) * camera.tanHalfY;
     return glm::normalize(x * camera.right + y * camera.up + camera.forward);
+}
+
+void forEachEyeRay(const Camera& camera, const std::vector<glm::ivec2>& pixels, int threads,
+                   const std::function<EyeRayBody()>& makeBody) {
+    constexpr std::size_t kChunk = 256; // pixels a task: enough to outweigh handing it out
+    parallelForPerThread(
+        (pixels.size() + kChunk - 1) / kChunk,
+        [&]() -> IndexBody {
+            return [&, body = makeBody()](std::size_t chunk) {
+                const std::size_t end = std::min(pixels.size(), (chunk + 1) * kChunk);
+                for (std::size_t k = chunk * kChunk; k < end; ++k)
+                    body(k, Ray{camera.eye, eyeDirection(camera, pixels[k].x, pixels[k].y,
+                                                         camera.samples.front())});
+            };
+        },
+        unsigned(std::max(threads, 0)));
 }
 
 } // namespace reference_geometry

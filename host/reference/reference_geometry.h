@@ -11,6 +11,8 @@
 
 #include <glm/glm.hpp>
 
+#include <cstddef>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -89,5 +91,13 @@ Camera makeCamera(const ReferenceSettings& settings);
 // y = (1 - 2 (j + v) / H) * tan(fov/2), direction normalize(x, y, -1) in camera space,
 // turned into the world by the camera's axes.
 dvec3 eyeDirection(const Camera& camera, int i, int j, glm::dvec2 sample);
+
+// Calls a body for sample 0's eye ray of each pixel of pixels, body(k, ray) for pixel k: the
+// pixels shared among threads (0: the host's policy) in chunks of 256, each thread with a
+// body of its own from makeBody (its scratch buffers live there). Bodies write disjoint
+// results, so they need no lock.
+using EyeRayBody = std::function<void(std::size_t, const Ray&)>;
+void forEachEyeRay(const Camera& camera, const std::vector<glm::ivec2>& pixels, int threads,
+                   const std::function<EyeRayBody()>& makeBody);
 
 } // namespace reference_geometry

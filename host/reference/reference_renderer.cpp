@@ -249,32 +249,25 @@ std::vector<EyeRayFacts> referenceEyeRays(const Scene& scene, const ReferenceSet
     const Camera camera = makeCamera(settings);
     const World world = prepareWorld(scene);
     std::vector<EyeRayFacts> facts(pixels.size());
-    constexpr std::size_t kChunk = 256; // pixels a task: enough to outweigh starting it
-    parallelFor(
-        (pixels.size() + kChunk - 1) / kChunk,
-        [&](std::size_t chunk) {
-            const std::size_t end = std::min(pixels.size(), (chunk + 1) * kChunk);
-            for (std::size_t k = chunk * kChunk; k < end; ++k) {
-                const Ray ray{camera.eye, eyeDirection(camera, pixels[k].x, pixels[k].y,
-                                                       camera.samples.front())};
-                Hit hit;
-                if (!closestHit(world, ray, hit)) continue;
-                const SurfacePoint p = surfaceAt(world, ray, hit);
-                EyeRayFacts& out = facts[k];
-                out.hit = storyPrimitive(world, hit.id);
-                out.onMirror = settings.depth > 0 && p.material.specular != dvec3(0.0);
-                for (const Light& light : scene.lights) {
-                    const dvec3 toLight = light.position - p.position;
-                    const double distance = glm::length(toLight);
-                    if (distance == 0 || glm::dot(p.normal, toLight) <= 0) continue;
-                    if (occluded(world, Ray{p.position, toLight / distance, hit.id}, distance)) {
-                        out.inShadow = true;
-                        break;
-                    }
+    forEachEyeRay(camera, pixels, threads, [&]() -> EyeRayBody {
+        return [&](std::size_t k, const Ray& ray) {
+            Hit hit;
+            if (!closestHit(world, ray, hit)) return;
+            const SurfacePoint p = surfaceAt(world, ray, hit);
+            EyeRayFacts& out = facts[k];
+            out.hit = storyPrimitive(world, hit.id);
+            out.onMirror = settings.depth > 0 && p.material.specular != dvec3(0.0);
+            for (const Light& light : scene.lights) {
+                const dvec3 toLight = light.position - p.position;
+                const double distance = glm::length(toLight);
+                if (distance == 0 || glm::dot(p.normal, toLight) <= 0) continue;
+                if (occluded(world, Ray{p.position, toLight / distance, hit.id}, distance)) {
+                    out.inShadow = true;
+                    break;
                 }
             }
-        },
-        unsigned(std::max(threads, 0)));
+        };
+    });
     return facts;
 }
 
@@ -292,19 +285,11 @@ std::vector<RayTerms> referenceTerms(const Scene& scene, const ReferenceSettings
         throw std::invalid_argument("the terms of a pixel need one sample per pixel");
     const World world = prepareWorld(scene);
     std::vector<RayTerms> terms(pixels.size());
-    constexpr std::size_t kChunk = 256; // pixels a task: enough to outweigh starting it
-    parallelFor((pixels.size() + kChunk - 1) / kChunk,
-                [&](std::size_t chunk) {
-                    std::vector<Bounce> path;
-                    const std::size_t end = std::min(pixels.size(), (chunk + 1) * kChunk);
-                    for (std::size_t k = chunk * kChunk; k < end; ++k) {
-                        const glm::ivec2 pixel = pixels[k];
-                        const Ray ray{camera.eye, eyeDirection(camera, pixel.x, pixel.y,
-                                                               camera.samples.front())};
-                        terms[k] = rayTerms(world, settings, ray, path);
-                    }
-                },
-                unsigned(std::max(threads, 0)));
+    forEachEyeRay(camera, pixels, threads, [&]() -> EyeRayBody {
+        return [&, path = std::vector<Bounce>()](std::size_t k, const Ray& ray) mutable {
+            terms[k] = rayTerms(world, settings, ray, path);
+        };
+    });
     return terms;
 }
 
