@@ -164,6 +164,14 @@ std::string comparisonJson(const Comparison& c) {
                 ? std::string("null")
                 : "{\"options\": " + jsonString(c.unconvincing) +
                       ", \"matching_fraction\": " + jsonNumber(c.unconvincingFraction, 6) + "}") +
+           ", \"set_aside_for_mistake\": " +
+           (!c.mistakeOverSettings
+                ? std::string("null")
+                : "{\"options\": " + jsonString(c.setAside) +
+                      ", \"options_sample_fraction\": " + jsonNumber(s.close, 6) +
+                      ", \"mistake\": " + jsonString(c.mistakeOverSettings->mistake->name) +
+                      ", \"mistake_sample_fraction\": " +
+                      jsonNumber(c.mistakeOverSettings->share, 6) + "}") +
            ", \"search\": {\"candidates\": " + std::to_string(s.candidates) +
            ", \"sample_pixels\": " + std::to_string(s.samplePixels) +
            ", \"rays\": " + std::to_string(s.tracedRays) +
@@ -202,6 +210,11 @@ std::string compareText(const Comparison& c) {
                percent(m.fractionMatching) + " of pixels within " + levelsText(c.tolerance.levels) +
                "; as given, on " + percent(c.asGivenFraction) + "\n";
     }
+    if (c.mistakeOverSettings)
+        out += "  (`" + c.setAside + "` brings " + percent(s.close) +
+               " of sampled pixels close, but as given a tracer with a classic mistake brings " +
+               percent(c.mistakeOverSettings->share) + ", " +
+               c.mistakeOverSettings->mistake->words + ": see the regions)\n";
     if (!c.unconvincing.empty())
         out += "  (the closest, `" + c.unconvincing + "`, reaches " +
                percent(c.unconvincingFraction) + ": too little to explain the differences)\n";

@@ -92,10 +92,19 @@ Comparison compareWithReference(const std::filesystem::path& imagePath, HandedIn
         searchGlobalSettings(scene, levels, request.fixed, closeness, request.threads);
     const auto renderStart = std::chrono::steady_clock::now();
     comparison.settings = comparison.search.settings;
+    const GlobalSettings given = givenSettings(request.fixed);
+    if (departures(comparison.settings) > departures(given)) {
+        const MistakeTrial mistake =
+            bestMistakeOnSample(scene, levels, given, closeness, request.threads);
+        if (mistake.mistake && mistake.share >= comparison.search.close) {
+            comparison.mistakeOverSettings = mistake;
+            comparison.setAside = departureOptions(comparison.settings);
+            comparison.settings = given;
+        }
+    }
     const ImageF colours = referenceColours(scene, comparison.settings, levels, request.threads);
     ImageF expected = presentedImage(colours, comparison.settings);
     comparison.match = matchWith(comparison, expected);
-    const GlobalSettings given = givenSettings(request.fixed);
     if (departures(comparison.settings) > departures(given)) {
         // As given, on every pixel: the settings found must gain enough over it. A flip, a
         // gamma or the like presents the same trace otherwise.
@@ -128,11 +137,10 @@ Comparison compareWithReference(const std::filesystem::path& imagePath, HandedIn
     const auto diagnosisStart = std::chrono::steady_clock::now();
     comparison.regionFacts =
         regionFacts(scene, comparison.match, comparison.settings, kListedRegions, request.threads);
-    // A JPEG's noise is not in the model's colours: held as the search holds it.
     comparison.diagnoses = diagnoseRegions(
-        scene, comparison.match, levels, comparison.settings,
-        isExactFormat(comparison.image.format) ? comparison.tolerance.levels : closeness,
-        kDiagnosedRegions, request.threads);
+        scene, comparison.match,
+        {levels, comparison.expected, comparison.image.jpegFile, comparison.tolerance.levels},
+        comparison.settings, kDiagnosedRegions, request.threads);
     comparison.diagnosisSeconds = secondsSince(diagnosisStart);
     const bool within = comparison.match.fractionMatching >= kMatchingFraction;
     comparison.verdict = !within ? Verdict::Differs

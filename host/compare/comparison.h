@@ -50,6 +50,11 @@ struct Comparison {
     GlobalSettings settings;
     std::string unconvincing;
     double unconvincingFraction = 0;
+    // When a mistake of the catalogue, under the settings as given, explains the search's
+    // sample at least as well as the settings it found: that mistake (its share of sample
+    // pixels brought close), and the settings found, set aside for it as for unconvincing.
+    std::optional<MistakeTrial> mistakeOverSettings;
+    std::string setAside;
     double asGivenFraction = 0; // the share of pixels matching as given
     // The reference under the settings found, as the image should hold it: its
     // orientation, channel order and levels.

@@ -4,6 +4,11 @@
 // explains the region when most of its pixels match with it, where none matched the
 // reference; when no mistake does, the region is "not explained by any known mistake",
 // never given a wrong cause.
+//
+// A JPEG's pixels carry the noise of its compression, which the model's colours do not:
+// there whole blocks of a region (as the file's blocks lie) are traced, set into the
+// reference's image and written as the file was written (jpeg_codec.h) before they are
+// held to the image, so that both carry the same noise.
 #pragma once
 
 #include "compare/global_settings.h"
@@ -11,6 +16,7 @@
 #include "compare/student_model.h"
 #include "scene/scene.h"
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -32,8 +38,24 @@ struct RegionDiagnosis {
     std::optional<MistakeTrial> cause;
 };
 
-// The diagnoses of match's first `count` regions. image: the image's levels; closeness: how
-// near a channel must be to count as matching (the tolerance for an exact file).
+// The mistake that best explains the whole image under settings, with the share of the
+// global search's sample pixels (global_search.h) whose channels it brings within closeness
+// of the image, as the search counts them. A mistake can pass for a global difference
+// (reflections added for a brighter image, ambient per light for another background): the
+// comparison weighs the two with it.
+MistakeTrial bestMistakeOnSample(const Scene& scene, const ImageF& levels,
+                                 const GlobalSettings& settings, double closeness, int threads = 0);
+
+// The image a region's pixels are held to, and how.
+struct DiagnosedImage {
+    const ImageF& levels;   // the image's levels
+    const ImageF& expected; // the reference as the image should show it, before any JPEG
+    const std::vector<std::uint8_t>& jpegFile; // the file, when it is a JPEG; else empty
+    double closeness; // how near a channel must be to count as matching (the tolerance)
+};
+
+// The diagnoses of match's first `count` regions, under settings.
 std::vector<RegionDiagnosis> diagnoseRegions(const Scene& scene, const PixelMatch& match,
-                                             const ImageF& image, const GlobalSettings& settings,
-                                             double closeness, std::size_t count, int threads = 0);
+                                             const DiagnosedImage& image,
+                                             const GlobalSettings& settings, std::size_t count,
+                                             int threads = 0);

@@ -31,7 +31,9 @@ double shareSlack(double best) {
 // scaled but another picture, which a factor only seems to explain.
 constexpr double kLowestBrightness = 0.5, kHighestBrightness = 2.0;
 
-std::vector<glm::ivec2> samplePixels(int width, int height) {
+} // namespace
+
+std::vector<glm::ivec2> searchSamplePixels(int width, int height) {
     const long pixels = long(width) * long(height);
     const int stride =
         std::max(1, int(std::ceil(std::sqrt(double(pixels) / double(kSamplePixels)))));
@@ -41,6 +43,8 @@ std::vector<glm::ivec2> samplePixels(int width, int height) {
             samples.emplace_back(i, j);
     return samples;
 }
+
+namespace {
 
 // The number with the fewest decimals (0 to 3) that an image under settings shows within
 // window levels of value's level (0: the same level).
@@ -285,7 +289,7 @@ GlobalSettings givenSettings(const FixedSettings& fixed) {
 SearchResult searchGlobalSettings(const Scene& scene, const ImageF& levels,
                                   const FixedSettings& fixed, double closeness, int threads) {
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<glm::ivec2> samples = samplePixels(levels.width, levels.height);
+    const std::vector<glm::ivec2> samples = searchSamplePixels(levels.width, levels.height);
     SearchResult result;
     result.samplePixels = long(samples.size());
 

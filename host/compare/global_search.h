@@ -9,6 +9,8 @@
 #include "compare/global_settings.h"
 #include "scene/scene.h"
 
+#include <vector>
+
 // Which settings the user fixed (the compare options); the others are searched. The
 // values of fixed ones are taken from values.
 struct FixedSettings {
@@ -36,6 +38,9 @@ struct SearchResult {
 // renderReference's.
 SearchResult searchGlobalSettings(const Scene& scene, const ImageF& levels,
                                   const FixedSettings& fixed, double closeness, int threads = 0);
+
+// The pixels the search samples in an image of this size: an even grid of about 20000.
+std::vector<glm::ivec2> searchSamplePixels(int width, int height);
 
 // The settings as given: the defaults, with what the user fixed.
 GlobalSettings givenSettings(const FixedSettings& fixed);

@@ -15,7 +15,12 @@ namespace {
 // the material of a triangle taken the wrong way when that is the mistake.
 SurfacePoint studentSurface(const World& world, const Ray& ray, const Hit& hit, Mistake mistake) {
     SurfacePoint p = surfaceAt(world, ray, hit);
-    if (hit.id < world.sphereCount) return p;
+    if (hit.id < world.sphereCount) {
+        // A tracer that takes the far root seldom turns the normal to face the ray either.
+        if (mistake == Mistake::SphereFarRoot)
+            p.normal = glm::normalize(p.position - world.scene.spheres[std::size_t(hit.id)].center);
+        return p;
+    }
     if (mistake != Mistake::FlatNormals && mistake != Mistake::MaterialsNotInterpolated &&
         mistake != Mistake::NormalsNotNormalised)
         return p;
@@ -33,6 +38,13 @@ SurfacePoint studentSurface(const World& world, const Ray& ray, const Hit& hit, 
         p.material = v[0].material;
     }
     return p;
+}
+
+HitRules hitRules(Mistake mistake) {
+    HitRules rules;
+    rules.cullBackFaces = mistake == Mistake::BackFacesCulled;
+    rules.farSphereRoot = mistake == Mistake::SphereFarRoot;
+    return rules;
 }
 
 // Phong with hard shadows as docs/model.md's "Shading" has it, but for mistake.
@@ -58,7 +70,8 @@ dvec3 studentLocal(const World& world, const SurfacePoint& p, dvec3 view, int id
         const bool shadowed =
             mistake != Mistake::NoShadows &&
             occluded(world, shadowRay,
-                     mistake == Mistake::ShadowIgnoresDistance ? infinity : distance);
+                     mistake == Mistake::ShadowIgnoresDistance ? infinity : distance,
+                     hitRules(mistake));
         double highlight = 0;
         if (mistake == Mistake::BlinnPhong) {
             const double nh = glm::dot(p.normal, glm::normalize(l + view));
@@ -90,7 +103,7 @@ dvec3 studentRay(const World& world, const ReferenceSettings& settings, Ray ray,
     dvec3 color = settings.background;
     for (int bounce = 0;; ++bounce) {
         Hit hit;
-        if (!closestHit(world, ray, hit)) {
+        if (!closestHit(world, ray, hit, hitRules(mistake))) {
             color = settings.background;
             break;
         }
@@ -141,6 +154,12 @@ const std::vector<MistakeDescription>& mistakeCatalogue() {
          "the reflection added to the local colour instead of blended with weight ks"},
         {Mistake::ColourClampedPerBounce, "colour-clamped-per-bounce",
          "each bounce's colour clamped before the reflections are blended"},
+        {Mistake::BackFacesCulled, "back-faces-culled",
+         "back faces culled: triangles seen against their winding are missed"},
+        {Mistake::SphereFarRoot, "sphere-far-root",
+         "the far root of the sphere taken: its back is seen through its front"},
+        {Mistake::WrongAspectRatio, "wrong-aspect-ratio",
+         "a wrong aspect ratio: the horizontal angle taken equal to the vertical one"},
     };
     return catalogue;
 }
@@ -148,7 +167,8 @@ const std::vector<MistakeDescription>& mistakeCatalogue() {
 std::vector<glm::dvec3> studentColours(const Scene& scene, const ReferenceSettings& settings,
                                        Mistake mistake, const std::vector<glm::ivec2>& pixels,
                                        int threads) {
-    const Camera camera = makeCamera(settings);
+    Camera camera = makeCamera(settings);
+    if (mistake == Mistake::WrongAspectRatio) camera.tanHalfX = camera.tanHalfY;
     if (settings.spp != 1) throw std::invalid_argument("the student model traces one sample");
     const World world = prepareWorld(scene);
     std::vector<glm::dvec3> colours(pixels.size());

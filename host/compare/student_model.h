@@ -28,7 +28,10 @@ enum class Mistake {
     NormalsNotNormalised,     // the interpolated normal used at its interpolated length
     ShadowAcne,               // shadow rays start on the surface and may hit it again
     ReflectionAdded,          // local + ks * reflected, not (1 - ks) * local + ks * reflected
-    ColourClampedPerBounce    // each bounce's local colour clamped to [0, 1] before the blend
+    ColourClampedPerBounce,   // each bounce's local colour clamped to [0, 1] before the blend
+    BackFacesCulled,          // triangles seen against their winding are missed, by every ray
+    SphereFarRoot,            // a sphere met at its far root, shaded with its outward normal
+    WrongAspectRatio          // the horizontal angle taken equal to the vertical one
 };
 
 struct MistakeDescription {

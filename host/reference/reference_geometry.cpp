@@ -26,10 +26,11 @@ World prepareWorld(const Scene& scene) {
 
 namespace {
 
-// The nearest t > 0 where the ray meets the sphere, or infinity. Geometric
+// The nearest t > 0 where the ray meets the sphere (with farRoot, the far root when it is
+// ahead: a mistake's, see HitRules), or infinity. Geometric
 // method: the closest approach of the ray's line to the centre is at tca, at a
 // squared distance d2; the line is inside the sphere for tca +- thc.
-double hitSphere(const Sphere& sphere, const Ray& ray, bool leavesIt) {
+double hitSphere(const Sphere& sphere, const Ray& ray, bool leavesIt, bool farRoot) {
     const double dd = glm::dot(ray.dir, ray.dir);
     if (leavesIt) {
         // The origin is on the sphere, so t = 0 is one root of
@@ -43,7 +44,7 @@ double hitSphere(const Sphere& sphere, const Ray& ray, bool leavesIt) {
     const double r2 = sphere.radius * sphere.radius;
     if (d2 > r2) return infinity;
     const double thc = std::sqrt((r2 - d2) / dd);
-    if (tca - thc > 0) return tca - thc;
+    if (tca - thc > 0 && !farRoot) return tca - thc;
     if (tca + thc > 0) return tca + thc;
     return infinity;
 }
@@ -54,10 +55,12 @@ double hitSphere(const Sphere& sphere, const Ray& ray, bool leavesIt) {
 // weight of the vertex opposite that edge. Both sides of the triangle count.
 // Only hits with 0 < t < tMax are reported; the cheap plane distance is checked
 // first so that most triangles cost no edge test (the result is the same).
-bool hitTriangle(const RefTriangle& tri, const Ray& ray, double tMax, double& t, dvec3& weights) {
+bool hitTriangle(const RefTriangle& tri, const Ray& ray, double tMax, double& t, dvec3& weights,
+                 bool cullBackFaces) {
     const double facing = glm::dot(tri.normal, ray.dir);
     if (facing == 0)
         return false; // the ray runs in the triangle's plane: it sees an edge-on sliver
+    if (cullBackFaces && facing > 0) return false;
     const dvec3 a = tri.a - ray.origin;
     t = glm::dot(tri.normal, a) / facing;
     if (!(t > 0 && t < tMax)) return false;
@@ -75,9 +78,10 @@ bool hitTriangle(const RefTriangle& tri, const Ray& ray, double tMax, double& t,
 
 } // namespace
 
-bool closestHit(const World& world, const Ray& ray, Hit& hit) {
+bool closestHit(const World& world, const Ray& ray, Hit& hit, const HitRules& rules) {
     for (int s = 0; s < world.sphereCount; ++s) {
-        const double t = hitSphere(world.scene.spheres[std::size_t(s)], ray, ray.from == s);
+        const double t =
+            hitSphere(world.scene.spheres[std::size_t(s)], ray, ray.from == s, rules.farSphereRoot);
         if (t < hit.t) {
             hit.t = t;
             hit.id = s;
@@ -86,7 +90,7 @@ bool closestHit(const World& world, const Ray& ray, Hit& hit) {
     double t = 0;
     dvec3 weights;
     for (const RefTriangle& tri : world.triangles) {
-        if (tri.id != ray.from && hitTriangle(tri, ray, hit.t, t, weights)) {
+        if (tri.id != ray.from && hitTriangle(tri, ray, hit.t, t, weights, rules.cullBackFaces)) {
             hit.t = t;
             hit.id = tri.id;
             hit.weights = weights;
@@ -95,13 +99,16 @@ bool closestHit(const World& world, const Ray& ray, Hit& hit) {
     return hit.id != fromEye;
 }
 
-bool occluded(const World& world, const Ray& ray, double maxT) {
+bool occluded(const World& world, const Ray& ray, double maxT, const HitRules& rules) {
     for (int s = 0; s < world.sphereCount; ++s)
-        if (hitSphere(world.scene.spheres[std::size_t(s)], ray, ray.from == s) < maxT) return true;
+        if (hitSphere(world.scene.spheres[std::size_t(s)], ray, ray.from == s,
+                      rules.farSphereRoot) < maxT)
+            return true;
     double t = 0;
     dvec3 weights;
     for (const RefTriangle& tri : world.triangles)
-        if (tri.id != ray.from && hitTriangle(tri, ray, maxT, t, weights)) return true;
+        if (tri.id != ray.from && hitTriangle(tri, ray, maxT, t, weights, rules.cullBackFaces))
+            return true;
     return false;
 }
 

@@ -64,16 +64,24 @@ struct Camera {
     std::vector<glm::dvec2> samples; // offsets (u, v) inside a pixel
 };
 
+// How a ray meets surfaces: the reference's way by default. The others are mistakes that
+// another tracer might make (the student model's, student_model.h); the reference itself
+// never sets them.
+struct HitRules {
+    bool cullBackFaces = false; // triangles seen from behind their winding are missed
+    bool farSphereRoot = false; // a sphere is met at its far root, not its near one
+};
+
 // The scene's primitives as the reference intersects them: every sphere, and the triangles
 // of non-zero area (no ray can hit the others).
 World prepareWorld(const Scene& scene);
 
 // The nearest surface the ray meets before hit.t (hit as it comes: infinity, or a bound),
 // never the primitive it leaves; false when there is none.
-bool closestHit(const World& world, const Ray& ray, Hit& hit);
+bool closestHit(const World& world, const Ray& ray, Hit& hit, const HitRules& rules = {});
 
 // Whether any surface lies strictly between the ray's origin and origin + maxT * dir.
-bool occluded(const World& world, const Ray& ray, double maxT);
+bool occluded(const World& world, const Ray& ray, double maxT, const HitRules& rules = {});
 
 // The point a hit gives: its position, its normal (interpolated for a triangle, facing the
 // incoming ray) and its material (interpolated for a triangle).
