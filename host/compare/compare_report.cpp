@@ -72,6 +72,46 @@ std::string diagnosisText(const RegionDiagnosis& d) {
     return out;
 }
 
+std::string colourText(glm::dvec3 c) {
+    // Rounding leaves a term that is nothing at -0.000: it is written 0.000.
+    auto value = [](double v) { return fixed(std::abs(v) < 5e-4 ? 0.0 : v, 3); };
+    return value(c.x) + " " + value(c.y) + " " + value(c.z);
+}
+
+// The representative pixel's ray tree, a line a term, indented under its region.
+std::string readingText(const RayTreeReading& r) {
+    std::string out = "     pixel (" + std::to_string(r.pixel.x) + ", " +
+                      std::to_string(r.pixel.y) + "): the image " + colourText(r.image) +
+                      ", the reference " + colourText(r.reference) + "; the eye ray meets " +
+                      r.meets + "\n";
+    if (r.terms.empty()) return out;
+    out += "       its terms in the reference, and what the image implies were each the only one "
+           "that differs:\n";
+    std::size_t width = 0;
+    for (const ImpliedTerm& t : r.terms)
+        width = std::max(width, t.name.size());
+    for (const ImpliedTerm& t : r.terms) {
+        std::string name = t.name;
+        name.resize(width, ' ');
+        out += "         " + name + "  " + colourText(t.reference) + "  implies " +
+               colourText(t.implied) + "\n";
+    }
+    return out;
+}
+
+std::string readingJson(const RayTreeReading& r) {
+    std::string terms;
+    for (std::size_t k = 0; k < r.terms.size(); ++k)
+        terms += std::string(k ? ", " : "") + "{\"term\": " + jsonString(r.terms[k].name) +
+                 ", \"reference\": " + jsonTriple(r.terms[k].reference, 6) +
+                 ", \"weight\": " + jsonTriple(r.terms[k].weight, 6) +
+                 ", \"implied\": " + jsonTriple(r.terms[k].implied, 6) + "}";
+    return ", \"ray_tree\": {\"x\": " + std::to_string(r.pixel.x) +
+           ", \"y\": " + std::to_string(r.pixel.y) + ", \"image\": " + jsonTriple(r.image, 6) +
+           ", \"reference\": " + jsonTriple(r.reference, 6) +
+           ", \"meets\": " + jsonString(r.meets) + ", \"terms\": [" + terms + "]}";
+}
+
 // The diagnosis as JSON fields (a leading comma): the cause (null when none explains it),
 // the reference's share and every mistake's.
 std::string diagnosisJson(const RegionDiagnosis& d) {
@@ -133,14 +173,16 @@ std::string comparisonJson(const Comparison& c) {
     std::string regions;
     for (std::size_t k = 0; k < std::min(kListedRegions, m.regions.size()); ++k) {
         const MismatchRegion& r = m.regions[k];
-        regions += std::string(k ? ", " : "") + "{\"left\": " + std::to_string(r.left) +
-                   ", \"top\": " + std::to_string(r.top) +
-                   ", \"right\": " + std::to_string(r.right) +
-                   ", \"bottom\": " + std::to_string(r.bottom) +
-                   ", \"pixels\": " + std::to_string(r.pixels) +
-                   ", \"mean_signed_difference\": " + jsonNumber(r.meanSignedDifference, 4) +
-                   (k < c.regionFacts.size() ? factsJson(c.regionFacts[k]) : std::string()) +
-                   (k < c.diagnoses.size() ? diagnosisJson(c.diagnoses[k]) : std::string()) + "}";
+        regions +=
+            std::string(k ? ", " : "") + "{\"left\": " + std::to_string(r.left) +
+            ", \"top\": " + std::to_string(r.top) + ", \"right\": " + std::to_string(r.right) +
+            ", \"bottom\": " + std::to_string(r.bottom) +
+            ", \"pixels\": " + std::to_string(r.pixels) +
+            ", \"mean_signed_difference\": " + jsonNumber(r.meanSignedDifference, 4) +
+            (k < c.regionFacts.size() ? factsJson(c.regionFacts[k]) : std::string()) +
+            (k < c.diagnoses.size() ? diagnosisJson(c.diagnoses[k]) : std::string()) +
+            (k < c.readings.size() && c.readings[k] ? readingJson(*c.readings[k]) : std::string()) +
+            "}";
     }
     const SearchResult& s = c.search;
     return "{\"image\": " + jsonString(c.imagePath.string()) +
@@ -232,6 +274,7 @@ std::string compareText(const Comparison& c) {
                 out += "     " + factsText(c.regionFacts[k]) + "\n";
             if (k < c.diagnoses.size() && c.diagnoses[k].traced > 0)
                 out += "     " + diagnosisText(c.diagnoses[k]) + "\n";
+            if (k < c.readings.size() && c.readings[k]) out += readingText(*c.readings[k]);
             listed += m.regions[k].pixels;
         }
         if (m.regions.size() > kTextRegions)

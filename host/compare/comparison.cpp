@@ -141,6 +141,14 @@ Comparison compareWithReference(const std::filesystem::path& imagePath, HandedIn
         scene, comparison.match,
         {levels, comparison.expected, comparison.image.jpegFile, comparison.tolerance.levels},
         comparison.settings, kDiagnosedRegions, request.threads);
+    for (std::size_t r = 0; r < comparison.diagnoses.size(); ++r) {
+        const RegionDiagnosis& d = comparison.diagnoses[r];
+        comparison.readings.push_back(
+            d.cause || d.referenceShare >= kExplainingShare
+                ? std::nullopt
+                : std::optional(
+                      readRayTree(scene, comparison.match, levels, comparison.settings, r)));
+    }
     comparison.diagnosisSeconds = secondsSince(diagnosisStart);
     const bool within = comparison.match.fractionMatching >= kMatchingFraction;
     comparison.verdict = !within ? Verdict::Differs

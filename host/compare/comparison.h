@@ -6,6 +6,7 @@
 #include "compare/diagnosis.h"
 #include "compare/global_search.h"
 #include "compare/handed_in_image.h"
+#include "compare/implied_terms.h"
 #include "compare/pixel_match.h"
 #include "compare/region_facts.h"
 #include "compare/tolerance.h"
@@ -64,6 +65,9 @@ struct Comparison {
     std::vector<RegionFacts> regionFacts;
     // Which classic mistake explains each of the first regions (as many as the text lists).
     std::vector<RegionDiagnosis> diagnoses;
+    // For each of those that no mistake explains (and that is not noise), its
+    // representative pixel's ray tree with the terms the image implies; else none.
+    std::vector<std::optional<RayTreeReading>> readings;
     Verdict verdict = Verdict::Differs;
     double renderSeconds = 0;    // the full-size reference
     double diagnosisSeconds = 0; // what the regions lie on, and their causes

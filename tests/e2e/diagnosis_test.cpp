@@ -15,11 +15,14 @@
 #include "compare/jpeg_codec.h"
 #include "compare/student_model.h"
 #include "mistake_scene.h"
+#include "reference/reference_story.h"
 #include "scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -72,16 +75,20 @@ std::vector<glm::ivec2> everyPixel() {
     return pixels;
 }
 
+ReferenceSettings settings() {
+    ReferenceSettings s;
+    s.width = kWidth;
+    s.height = kHeight;
+    s.clampSamples = false;
+    return s;
+}
+
 // The scene as a tracer with mistake writes it: colours clamped, rounded to levels.
 ImageF levelsWith(const Scene& scene, Mistake mistake) {
-    ReferenceSettings settings;
-    settings.width = kWidth;
-    settings.height = kHeight;
-    settings.clampSamples = false;
     ImageF image;
     image.width = kWidth;
     image.height = kHeight;
-    for (const glm::dvec3& c : studentColours(scene, settings, mistake, everyPixel()))
+    for (const glm::dvec3& c : studentColours(scene, settings(), mistake, everyPixel()))
         for (int k = 0; k < 3; ++k)
             image.rgb.push_back(float(std::floor(std::clamp(c[k], 0.0, 1.0) * 255.0 + 0.5)));
     return image;
@@ -187,3 +194,100 @@ INSTANTIATE_TEST_SUITE_P(Diagnosis, EveryMistake, testing::ValuesIn(mistakeCatal
                              std::replace(name.begin(), name.end(), '-', '_');
                              return name;
                          });
+
+TEST(Diagnosis, TwoMistakesOnTwoObjectsGiveTwoRegionsWithTheirCauses) {
+    const fs::path dir = freshOutputDir("diagnosis/two_mistakes");
+    const fs::path scenePath = dir / "mistakes.scene";
+    writeTextFile(scenePath, kMistakeScene);
+    const Scene scene = loadScene(scenePath);
+    // The first sphere from a tracer with Blinn-Phong highlights, the floor (the first
+    // triangle) from one that takes a triangle's material from its first corner: each pixel
+    // from the tracer of the object its eye ray meets.
+    const ImageF blinnPhong = levelsWith(scene, Mistake::BlinnPhong);
+    const ImageF firstCorner = levelsWith(scene, Mistake::MaterialsNotInterpolated);
+    ImageF image = levelsWith(scene, Mistake::None);
+    const std::vector<EyeRayFacts> rays = referenceEyeRays(scene, settings(), everyPixel());
+    for (std::size_t p = 0; p < rays.size(); ++p) {
+        const std::string kind = rays[p].hit.kind;
+        const ImageF* from = rays[p].hit.index != 0 ? nullptr
+                             : kind == "sphere"     ? &blinnPhong
+                             : kind == "triangle"   ? &firstCorner
+                                                    : nullptr;
+        if (from) std::copy_n(&from->rgb[3 * p], 3, &image.rgb[3 * p]);
+    }
+    for (const Comparison& c : compareAsPngAndJpeg(image, dir / "two", scenePath, scene)) {
+        const std::set<std::string> causes{causeOf(c, 0), causeOf(c, 1)};
+        EXPECT_EQ(causes, (std::set<std::string>{"blinn-phong", "materials-not-interpolated"}))
+            << summary(c);
+    }
+}
+
+TEST(Diagnosis, AWatermarkIsExplainedByNoMistake) {
+    const fs::path dir = freshOutputDir("diagnosis/watermark");
+    const fs::path scenePath = fs::path(SHARED_SCENES_DIR) / "spheres.scene";
+    if (!fs::exists(scenePath)) GTEST_SKIP() << scenePath << " not found";
+    const Scene scene = loadScene(scenePath);
+    // A correct image with a signature drawn over its lower right: three strokes, two pixels
+    // wide, blended halfway to white.
+    ImageF image = levelsWith(scene, Mistake::None);
+    auto stroke = [&](glm::ivec2 from, glm::ivec2 to) {
+        for (int step = 0; step <= 64; ++step) {
+            const glm::dvec2 at = glm::mix(glm::dvec2(from), glm::dvec2(to), step / 64.0);
+            for (int dy = 0; dy < 2; ++dy)
+                for (int dx = 0; dx < 2; ++dx) {
+                    const std::size_t p = std::size_t(int(at.y) + dy) * kWidth + int(at.x) + dx;
+                    for (std::size_t k = 0; k < 3; ++k)
+                        image.rgb[3 * p + k] =
+                            std::floor(0.5f * image.rgb[3 * p + k] + 0.5f * 255.0f + 0.5f);
+                }
+        }
+    };
+    stroke({100, 110}, {112, 92});
+    stroke({112, 92}, {124, 110});
+    stroke({124, 110}, {150, 96});
+    for (const Comparison& c : compareAsPngAndJpeg(image, dir / "signed", scenePath, scene)) {
+        ASSERT_FALSE(c.diagnoses.empty()) << summary(c);
+        EXPECT_EQ(causeOf(c, 0), "(none)") << summary(c);
+        EXPECT_LT(c.diagnoses[0].referenceShare, 0.5) << "taken for noise: " << summary(c);
+        EXPECT_EQ(departureOptions(c.settings), "") << summary(c);
+    }
+}
+
+TEST(Diagnosis, AnUnexplainedRegionShowsTheTermsItsPixelImplies) {
+    // A tracer whose one light is half as bright again: no mistake of the catalogue. The
+    // region's pixel must imply, for that light's diffuse term, the reference's plus half of
+    // the light's whole share (diffuse and specular), its weight taken into account.
+    const fs::path dir = freshOutputDir("diagnosis/implied_terms");
+    const std::string scene = "2\namb: 0.1 0.1 0.1\nlight\npos: 2 3 0\ncol: COLOUR\nsphere\n"
+                              "pos: 0 0 -4\nrad: 1\ndif: 0.4 0.3 0.2\nspe: 0.2 0.2 0.2\nshi: 10\n";
+    auto withLight = [&](const std::string& colour) {
+        std::string text = scene;
+        return text.replace(text.find("COLOUR"), 6, colour);
+    };
+    const fs::path scenePath = dir / "one_light.scene";
+    writeTextFile(scenePath, withLight("0.6 0.6 0.6"));
+    writeTextFile(dir / "brighter.scene", withLight("0.9 0.9 0.9"));
+    const Scene right = loadScene(scenePath);
+    const ImageF image = levelsWith(loadScene(dir / "brighter.scene"), Mistake::None);
+    writePng(dir / "brighter.png", bytesOf(image));
+    CompareRequest request;
+    request.fixed.brightness = true; // a brightness would explain much of it
+    const Comparison c = compareWithReference(
+        dir / "brighter.png", readHandedInImage(dir / "brighter.png"), scenePath, right, request);
+    ASSERT_FALSE(c.readings.empty()) << summary(c);
+    ASSERT_TRUE(c.readings[0]) << summary(c);
+    const RayTreeReading& reading = *c.readings[0];
+    EXPECT_EQ(reading.meets, "the sphere of line 6");
+    ASSERT_EQ(reading.terms.size(), 4u); // ambient, the light's diffuse and specular, reflection
+    const ImpliedTerm& diffuse = reading.terms[1];
+    const ImpliedTerm& specular = reading.terms[2];
+    EXPECT_EQ(diffuse.name, "light 1 (line 3) diffuse, lit");
+    for (int k = 0; k < 3; ++k) {
+        // One level of the image, through the term's weight, is all it may be off.
+        const double level = 1.0 / 255.0 / diffuse.weight[k];
+        EXPECT_NEAR(diffuse.implied[k],
+                    diffuse.reference[k] + 0.5 * (diffuse.reference[k] + specular.reference[k]),
+                    level)
+            << "channel " << k;
+    }
+}
