@@ -10,6 +10,8 @@
 #include "cli/output_pattern.h"
 #include "cli/render_settings.h"
 #include "cli/version.h"
+#include "compare/compare_report.h"
+#include "compare/comparison.h"
 #include "compare_command.h"
 #include "gpu/cpu_driver.h"
 #include "gpu/device_list.h"
@@ -148,6 +150,13 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
     if (!options.outputPath.empty())
         options.outputPath =
             expandOutputPattern(options.outputPath.string(), options.scenePath.stem().string(), 0);
+    // --compare: the window takes the image's size (read first: its errors come first).
+    std::optional<HandedInImage> compared;
+    if (!options.compareImage.empty()) {
+        compared = readHandedInImage(options.compareImage);
+        options.width = std::uint32_t(compared->levels.width);
+        options.height = std::uint32_t(compared->levels.height);
+    }
     const auto parseStart = std::chrono::steady_clock::now();
     Scene scene = loadScene(options.scenePath, objSceneSetup(options));
     startup.parseMs =
@@ -168,8 +177,20 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
         return kSuccess;
     }
 
+    // The comparison as Raytracer compare makes it, its report on stdout; the window shows it.
+    std::optional<Comparison> comparison;
+    if (compared) {
+        comparison = compareWithReference(options.compareImage, std::move(*compared),
+                                          options.scenePath, scene, CompareRequest{});
+        std::cout << compareText(*comparison) << std::flush;
+    }
     bool headless = !options.outputPath.empty() || options.benchFrames > 0 || options.pixelGiven;
-    if (!headless && !runWindow(options, scene)) {
+    if (!headless && !runWindow(options, scene, comparison ? &*comparison : nullptr)) {
+        if (comparison)
+            throw std::runtime_error("--compare shows the comparison in a window, but none can be "
+                                     "opened: " +
+                                     windowUnavailableReason() +
+                                     " (the report above is Raytracer compare's)");
         if (options.forceWindow)
             throw std::runtime_error("--window was given, but no window can be opened: " +
                                      windowUnavailableReason());

@@ -152,6 +152,12 @@ void checkOptionCombinations(Options& options, const OptionsGiven& given) {
                              " lies beyond --spp " + std::to_string(options.samplesPerPixel) +
                              ", where the window stops refining");
     }
+    if (!options.compareImage.empty() &&
+        (!options.outputPath.empty() || options.benchFrames > 0 || options.benchWindowFrames > 0 ||
+         options.pixelGiven || options.checkOnly || !options.moreScenes.empty()))
+        throw UsageError("--compare opens a window and cannot be combined with -o, --bench, "
+                         "--bench-window, --pixel, --check or more scenes (headless: Raytracer "
+                         "compare IMAGE SCENE)");
     if (options.benchWindowFrames > 0 && (!options.outputPath.empty() || options.benchFrames > 0))
         throw UsageError(
             "--bench-window cannot be combined with -o or --bench, which render headless");

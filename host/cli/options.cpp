@@ -137,6 +137,9 @@ std::string usageText() {
            "  --quiet               print no progress, notes or warnings on stderr; errors only\n"
            "  --window              show a window or fail; never fall back to a headless PNG\n"
            "  --overlay             open the window with its overlay shown (H toggles it)\n"
+           "  --compare FILE        window: compare the render with FILE, another tracer's image\n"
+           "                        of the scene (as Raytracer compare does): 1, 2, 3 show the\n"
+           "                        render, FILE, the difference; I prints a pixel's diagnosis\n"
            "  --shader-dir DIR      compile the kernel from DIR's sources (trace.comp and its\n"
            "                        includes); the window recompiles when one is saved\n"
            "  --dump-shaders DIR    write the built-in shader sources to DIR and exit\n"
@@ -275,6 +278,9 @@ Options parseOptions(int argc, const char* const* argv) {
             options.forceWindow = true;
         } else if (arg == "--overlay") {
             options.overlay = true;
+        } else if (arg == "--compare") {
+            options.compareImage = value();
+            if (options.compareImage.empty()) throw UsageError("--compare expects an image file");
         } else if (arg == "--redraw-continuously") {
             options.redrawContinuously = true;
         } else if (arg == "--general-kernel") {

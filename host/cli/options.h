@@ -66,6 +66,10 @@ struct Options {
     bool generalKernel = false; // --general-kernel (hidden, for tools/kernel_costs)
     bool countWork = false;     // --count-work (hidden): --bench reports the hierarchy's work
     bool storageReads = false;  // --storage-reads (hidden): the kernel's fallback read path
+    // --compare FILE: the window at FILE's size compares the render with FILE (an image of the
+    // scene made by another tracer): keys show the render, FILE or the difference, I prints
+    // a pixel's diagnosis (docs/compare.md).
+    std::filesystem::path compareImage;
     // --pixel X,Y: print the pixel story of column X, row Y as JSON (docs/pixel_story.md);
     // headless, and alone (no PNG) without -o.
     bool pixelGiven = false;

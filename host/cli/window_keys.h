@@ -18,7 +18,7 @@ struct WindowKey {
     std::string_view detail; // more, for the docs' table only; may be empty
 };
 
-inline constexpr std::array<WindowKey, 15> kWindowKeys = {{
+inline constexpr std::array<WindowKey, 16> kWindowKeys = {{
     {"Esc or Q", "quits", ""},
     {"R", "reloads the scene file and the shaders", ""},
     {"P", "writes a screenshot PNG of what is shown now",
@@ -47,10 +47,16 @@ inline constexpr std::array<WindowKey, 15> kWindowKeys = {{
      "copy); never in P's screenshots; hidden unless `--overlay`"},
     {"I", "prints the story of the pixel under the mouse",
      "on stdout: its ray tree as the kernel traced it, as JSON, at the window's sample target, "
-     "as `--pixel X,Y` prints it headless (docs/pixel_story.md)"},
+     "as `--pixel X,Y` prints it headless (docs/pixel_story.md); with `--compare`, the pixel's "
+     "diagnosis instead: its colours, its region and the region's cause, the terms your image "
+     "implies there (docs/compare.md)"},
     {"I + left click", "prints the story of the clicked pixel",
      "(hold I down and click; the click starts no orbit), as I does for the pixel under the "
      "mouse; stderr says `Pixel story: clicked pixel X,Y printed on stdout`"},
+    {"1/2/3 or F", "with --compare, show the render, your image or the difference",
+     "(F flips between the render and your image); the difference is `Raytracer compare`'s "
+     "heat map: grey where a pixel matches, blue where your image is darker, red where it is "
+     "brighter; P writes what is shown"},
 }};
 
 // --help's section: a heading, then one "  KEYS EFFECT" line per entry.

@@ -78,27 +78,6 @@ std::string colourText(glm::dvec3 c) {
     return value(c.x) + " " + value(c.y) + " " + value(c.z);
 }
 
-// The representative pixel's ray tree, a line a term, indented under its region.
-std::string readingText(const RayTreeReading& r) {
-    std::string out = "     pixel (" + std::to_string(r.pixel.x) + ", " +
-                      std::to_string(r.pixel.y) + "): the image " + colourText(r.image) +
-                      ", the reference " + colourText(r.reference) + "; the eye ray meets " +
-                      r.meets + "\n";
-    if (r.terms.empty()) return out;
-    out += "       its terms in the reference, and what the image implies were each the only one "
-           "that differs:\n";
-    std::size_t width = 0;
-    for (const ImpliedTerm& t : r.terms)
-        width = std::max(width, t.name.size());
-    for (const ImpliedTerm& t : r.terms) {
-        std::string name = t.name;
-        name.resize(width, ' ');
-        out += "         " + name + "  " + colourText(t.reference) + "  implies " +
-               colourText(t.implied) + "\n";
-    }
-    return out;
-}
-
 std::string readingJson(const RayTreeReading& r) {
     std::string terms;
     for (std::size_t k = 0; k < r.terms.size(); ++k)
@@ -227,11 +206,42 @@ std::string comparisonJson(const Comparison& c) {
 
 } // namespace
 
+// The representative pixel's ray tree, a line a term, indented under its region.
+std::string readingText(const RayTreeReading& r) {
+    std::string out = "     pixel (" + std::to_string(r.pixel.x) + ", " +
+                      std::to_string(r.pixel.y) + "): the image " + colourText(r.image) +
+                      ", the reference " + colourText(r.reference) + "; the eye ray meets " +
+                      r.meets + "\n";
+    if (r.terms.empty()) return out;
+    out += "       its terms in the reference, and what the image implies were each the only one "
+           "that differs:\n";
+    std::size_t width = 0;
+    for (const ImpliedTerm& t : r.terms)
+        width = std::max(width, t.name.size());
+    for (const ImpliedTerm& t : r.terms) {
+        std::string name = t.name;
+        name.resize(width, ' ');
+        out += "         " + name + "  " + colourText(t.reference) + "  implies " +
+               colourText(t.implied) + "\n";
+    }
+    return out;
+}
+
 std::string percent(double fraction) {
     std::string text = fixed(fraction * 100.0, 2);
     if (text == "100.00" && fraction < 1) text = "99.99";
     if (text == "0.00" && fraction > 0) text = "0.01";
     return text + "%";
+}
+
+std::string regionText(const Comparison& c, std::size_t k) {
+    std::string out = "  " + std::to_string(k + 1) + ". " + regionLine(c.match.regions[k]) + "\n";
+    if (k < c.regionFacts.size() && c.regionFacts[k].traced > 0)
+        out += "     " + factsText(c.regionFacts[k]) + "\n";
+    if (k < c.diagnoses.size() && c.diagnoses[k].traced > 0)
+        out += "     " + diagnosisText(c.diagnoses[k]) + "\n";
+    if (k < c.readings.size() && c.readings[k]) out += readingText(*c.readings[k]);
+    return out;
 }
 
 std::string compareText(const Comparison& c) {
@@ -269,12 +279,7 @@ std::string compareText(const Comparison& c) {
         out += "where the rest is (worst first):\n";
         long listed = 0;
         for (std::size_t k = 0; k < std::min(kTextRegions, m.regions.size()); ++k) {
-            out += "  " + std::to_string(k + 1) + ". " + regionLine(m.regions[k]) + "\n";
-            if (k < c.regionFacts.size() && c.regionFacts[k].traced > 0)
-                out += "     " + factsText(c.regionFacts[k]) + "\n";
-            if (k < c.diagnoses.size() && c.diagnoses[k].traced > 0)
-                out += "     " + diagnosisText(c.diagnoses[k]) + "\n";
-            if (k < c.readings.size() && c.readings[k]) out += readingText(*c.readings[k]);
+            out += regionText(c, k);
             listed += m.regions[k].pixels;
         }
         if (m.regions.size() > kTextRegions)

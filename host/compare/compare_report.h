@@ -18,6 +18,13 @@ inline constexpr std::size_t kTextRegions = kDiagnosedRegions;
 
 std::string compareText(const Comparison& comparison);
 
+// The text's lines for region k of the comparison: where it is, what it lies on, its cause
+// and, when none explains it, its pixel's ray tree.
+std::string regionText(const Comparison& comparison, std::size_t k);
+
+// A pixel's ray tree with the terms the image implies, as the text prints it (indented).
+std::string readingText(const RayTreeReading& reading);
+
 // One image of a folder that could not be compared: why.
 struct CompareFailure {
     std::string image, scene, message;

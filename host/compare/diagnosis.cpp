@@ -127,7 +127,11 @@ std::vector<RegionDiagnosis> diagnoseRegions(const Scene& scene, const PixelMatc
     const ReferenceSettings reference = referenceSettingsFor(settings, match.width, match.height);
     // Each region's count of judged pixels that the image shows as a tracer with mistake
     // would: its colours presented in the image's levels, over the reference's image and
-    // through the file's JPEG writing for a JPEG.
+    // through the file's JPEG writing for a JPEG. With a mistake, only pixels it changes
+    // (beyond the closeness, from the reference's) count: a mistake that leaves a pixel as
+    // it was cannot be why the pixel differs, and near the tolerance (another encoder's
+    // JPEG noise) a small change matches by chance.
+    ImageF plainShown;
     auto matching = [&](Mistake mistake) {
         const std::vector<glm::dvec3> colours =
             studentColours(scene, reference, mistake, trial.reference, threads);
@@ -137,11 +141,14 @@ std::vector<RegionDiagnosis> diagnoseRegions(const Scene& scene, const PixelMatc
                 shown.rgb[trial.traced[k] * 3 + c] =
                     float(presentedLevel(settings, colours[k][settings.channels[c]]));
         if (jpeg) shown = throughJpegLike(shown, image.jpegFile);
+        if (mistake == Mistake::None) plainShown = shown;
         std::vector<long> counts(regions, 0);
         for (std::size_t k = 0; k < trial.judged.size(); ++k) {
             const std::size_t p = trial.judged[k];
+            const bool changed = mistake == Mistake::None ||
+                                 !near(&plainShown.rgb[p * 3], &shown.rgb[p * 3], image.closeness);
             counts[std::size_t(trial.region[k])] +=
-                near(&image.levels.rgb[p * 3], &shown.rgb[p * 3], image.closeness);
+                changed && near(&image.levels.rgb[p * 3], &shown.rgb[p * 3], image.closeness);
         }
         return counts;
     };

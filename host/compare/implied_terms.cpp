@@ -33,18 +33,22 @@ glm::ivec2 representativePixel(const PixelMatch& match, std::size_t region) {
 
 RayTreeReading readRayTree(const Scene& scene, const PixelMatch& match, const ImageF& levels,
                            const GlobalSettings& settings, std::size_t region) {
+    return readRayTreeAt(scene, levels, settings, representativePixel(match, region));
+}
+
+RayTreeReading readRayTreeAt(const Scene& scene, const ImageF& levels,
+                             const GlobalSettings& settings, glm::ivec2 pixel) {
     RayTreeReading reading;
-    reading.pixel = representativePixel(match, region);
+    reading.pixel = pixel;
     const glm::ivec2 at =
-        referencePixel(settings.flip, reading.pixel.x, reading.pixel.y, match.width, match.height);
-    ReferenceSettings traced = referenceSettingsFor(settings, match.width, match.height);
+        referencePixel(settings.flip, pixel.x, pixel.y, levels.width, levels.height);
+    ReferenceSettings traced = referenceSettingsFor(settings, levels.width, levels.height);
     traced.clampSamples = false;
     const ReferenceStory story = referencePixelStory(scene, traced, at.x, at.y);
     // Both colours as the image holds them: the reference clamped where the image clamps,
     // the image's levels read back; in the reference's channel order.
     const float* shown =
-        &levels
-             .rgb[(std::size_t(reading.pixel.y) * std::size_t(match.width) + reading.pixel.x) * 3];
+        &levels.rgb[(std::size_t(pixel.y) * std::size_t(levels.width) + std::size_t(pixel.x)) * 3];
     for (std::size_t k = 0; k < 3; ++k) {
         const int c = settings.channels[k];
         reading.image[c] = linearFromLevel(settings, shown[k]);

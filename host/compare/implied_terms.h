@@ -35,3 +35,7 @@ struct RayTreeReading {
 // region's mean) of match, under settings; levels: the image.
 RayTreeReading readRayTree(const Scene& scene, const PixelMatch& match, const ImageF& levels,
                            const GlobalSettings& settings, std::size_t region);
+
+// The reading of any pixel of the image (its coordinates in the image).
+RayTreeReading readRayTreeAt(const Scene& scene, const ImageF& levels,
+                             const GlobalSettings& settings, glm::ivec2 pixel);

@@ -5,6 +5,7 @@
 
 #include "base/json.h"
 #include "cli/command_line.h"
+#include "window/compare_view.h"
 #include "window/screenshot.h"
 
 #include <chrono>
@@ -39,6 +40,14 @@ void writeScreenshot(Viewer& viewer) {
     const std::uint32_t samples = viewer.samplesDone;
     const std::filesystem::path path = nextScreenshotPath(
         std::filesystem::current_path(), options.scenePath.stem().string(), samples);
+    if (const Image8* shown = comparedBytes(viewer)) { // --compare: the image or the difference
+        writePng(path, *shown);
+        std::fprintf(stderr, "Screenshot: wrote %s (%dx%d, %s)\n", path.string().c_str(),
+                     shown->width, shown->height,
+                     viewer.compare.shown == ComparedPicture::Image ? "your image"
+                                                                    : "the difference");
+        return;
+    }
     const Image8 image = readOutputImage(viewer.context, viewer.renderer);
     writePng(path, image);
     const std::string of = samples == viewer.sampleTarget

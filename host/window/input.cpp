@@ -5,6 +5,7 @@
 // the keys named here are exactly the ones it lists.
 #include "window/input.h"
 
+#include "window/compare_view.h"
 #include "window/overlay.h"
 #include "window/reload.h"
 
@@ -93,6 +94,20 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
         glfwGetCursorPos(window, &viewer.storyX, &viewer.storyY);
         viewer.storyPending = true;
         viewer.storyClicked = false;
+        break;
+    case GLFW_KEY_1: // with --compare: the render, the image, the difference; F flips
+        showCompared(viewer, ComparedPicture::Render);
+        break;
+    case GLFW_KEY_2:
+        showCompared(viewer, ComparedPicture::Image);
+        break;
+    case GLFW_KEY_3:
+        showCompared(viewer, ComparedPicture::Difference);
+        break;
+    case GLFW_KEY_F:
+        showCompared(viewer, viewer.compare.shown == ComparedPicture::Image
+                                 ? ComparedPicture::Render
+                                 : ComparedPicture::Image);
         break;
     case GLFW_KEY_C:
     case GLFW_KEY_HOME:

@@ -6,6 +6,7 @@
 #include "base/scope_guard.h"
 #include "gpu/vk_check.h"
 #include "window/capture.h"
+#include "window/compare_view.h"
 #include "window/overlay.h"
 
 #include <algorithm>
@@ -38,13 +39,16 @@ void record(const Viewer& viewer, VkCommandBuffer commands, std::uint32_t imageI
                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
     // Same size, nearest filter: every pixel is copied unchanged. RGBA8 to BGRA8 UNORM
-    // swaps channels only; the 8-bit values stay exact.
-    const Image& output = viewer.renderer.outputImage;
+    // swaps channels only; the 8-bit values stay exact. With --compare, the image or the
+    // difference may be shown instead (at its own size, stretched should the window differ).
+    const Image* compared = comparedPicture(viewer);
+    const Image& output = compared ? *compared : viewer.renderer.outputImage;
     VkImageBlit region{};
     region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.srcOffsets[1] = {int32_t(output.width), int32_t(output.height), 1};
     region.dstSubresource = region.srcSubresource;
-    region.dstOffsets[1] = region.srcOffsets[1];
+    region.dstOffsets[1] = {int32_t(viewer.swapchain.extent.width),
+                            int32_t(viewer.swapchain.extent.height), 1};
     vkCmdBlitImage(commands, output.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_NEAREST);
     // The overlay draws over the swapchain image only, after the blit; its render pass

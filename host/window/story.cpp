@@ -2,6 +2,7 @@
 
 #include "cli/window_keys.h"
 #include "render/pixel_story.h"
+#include "window/compare_view.h"
 
 #include <cstdio>
 #include <exception>
@@ -17,6 +18,11 @@ void printStoryUnderCursor(Viewer& viewer) {
     const char* which = viewer.storyClicked ? "clicked pixel" : "pixel";
     if (!pixel) {
         std::fprintf(stderr, "Pixel story: the mouse is not over the image\n");
+        return;
+    }
+    if (viewer.compare.comparison) { // --compare: the pixel's diagnosis instead of its story
+        printPixelDiagnosis(viewer, *pixel);
+        std::fprintf(stderr, "Diagnosis: %s %u,%u printed on stdout\n", which, pixel->x, pixel->y);
         return;
     }
     const RenderSettings& settings = viewer.renderer.settings;

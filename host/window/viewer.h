@@ -9,6 +9,7 @@
 
 #include "base/file_watch.h"
 #include "cli/options.h"
+#include "compare/comparison.h"
 #include "gpu/context.h"
 #include "render/renderer.h"
 #include "scene/camera.h"
@@ -46,6 +47,16 @@ struct Overlay {
     std::vector<VkFramebuffer> framebuffers;
 };
 
+// --compare FILE: what the window shows (keys 1, 2, 3, F), and the pictures other than the
+// render (window/compare_view.h).
+enum class ComparedPicture { Render, Image, Difference };
+struct CompareView {
+    const Comparison* comparison = nullptr; // none: the window compares nothing
+    ComparedPicture shown = ComparedPicture::Render;
+    Image8 image, difference;
+    Image picture; // the image or the difference, as shown now; TRANSFER_SRC_OPTIMAL
+};
+
 struct Viewer {
     // The command line's options as the window uses them now: the overlay's switches change
     // this copy, so that P's headless command names what is shown.
@@ -57,6 +68,7 @@ struct Viewer {
     Swapchain swapchain;
     Frame frames[kFramesInFlight];
     Overlay overlay;
+    CompareView compare;
     std::uint32_t frameIndex = 0;
     std::string sceneName; // the title's first part
     Scene scene;           // the last scene that loaded, for shader reloads

@@ -15,6 +15,7 @@
 #include "cli/window_keys.h"
 #include "gpu/vk_check.h"
 #include "window/capture.h"
+#include "window/compare_view.h"
 #include "window/input.h"
 #include "window/overlay.h"
 #include "window/present.h"
@@ -46,7 +47,8 @@ void onGlfwError(int code, const char* description) {
         glfwInitError = description;
 }
 
-void open(Viewer& viewer, const Options& commandLine, const Scene& scene) {
+void open(Viewer& viewer, const Options& commandLine, const Scene& scene,
+          const Comparison* comparison) {
     viewer.options = commandLine;
     const Options& options = viewer.options;
     viewer.scene = scene;
@@ -96,6 +98,8 @@ void open(Viewer& viewer, const Options& commandLine, const Scene& scene) {
     settings.progressive = true;
     createRenderer(viewer.renderer, viewer.context, scene, settings);
     createFrames(viewer);
+    viewer.compare.comparison = comparison;
+    openCompareView(viewer);
 }
 
 void runLoop(Viewer& viewer) {
@@ -140,6 +144,7 @@ void runLoop(Viewer& viewer) {
 void close(Viewer& viewer) {
     if (viewer.context.device) vkDeviceWaitIdle(viewer.context.device);
     destroyOverlay(viewer);
+    destroyCompareView(viewer);
     destroyFrames(viewer);
     destroySwapchain(viewer.swapchain, viewer.context);
     destroyRenderer(viewer.renderer, viewer.context);
@@ -163,14 +168,14 @@ std::string windowUnavailableReason() {
     return glfwInitError.empty() ? "GLFW could not start" : glfwInitError;
 }
 
-bool runWindow(const Options& options, const Scene& scene) {
+bool runWindow(const Options& options, const Scene& scene, const Comparison* comparison) {
     glfwSetErrorCallback(onGlfwError);
     glfwInitError.clear();
     if (!glfwInit()) return false; // no display: the caller renders headless
     glfwReady = true;
     Viewer viewer;
     ScopeExit closeAll([&] { shutDown(viewer); });
-    open(viewer, options, scene);
+    open(viewer, options, scene, comparison);
     std::fputs(windowKeysLine().c_str(), stderr);
     runLoop(viewer);
     dropPendingScreenshot(viewer);

@@ -20,7 +20,7 @@ ALLOWED = {
     "packing": {"base", "scene"},
     "render": {"base", "scene", "gpu", "packing"},
     "cli": {"base", "scene", "gpu", "packing", "render"},
-    "window": {"base", "scene", "gpu", "packing", "render", "cli"},
+    "window": {"base", "scene", "gpu", "packing", "render", "cli", "compare"},
     "reference": {"base", "scene"},
     "compare": {"base", "scene", "reference"},
     # main.cpp, bench.*, batch.*

@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
 """Times Raytracer compare: for each scene, a correct 640x480 render (the CPU reference's
-own PNG, from reference_render) and Raytracer's render of it upside down (a PPM from
-Raytracer -o, its rows reversed here), each compared with the scene, the global search
-included. Prints a table of seconds (search, full-size reference, whole run
-as the process saw it) and the verdicts, for docs/performance.md.
+own PNG, from reference_render), Raytracer's render of it upside down (a PPM from
+Raytracer -o, its rows reversed here), and the scene as a tracer with a classic mistake
+renders it (reference_render --mistake) as PNG and as JPEG of quality 75, each compared
+with the scene, the global search and the catalogue of mistakes included. Prints a table
+of seconds (search, full-size reference, the regions' facts and causes, whole run as the
+process saw it), the verdicts and the first region's cause, for docs/performance.md.
 
-usage: compare_bench.py BUILD_DIR SCENE... [--runs N]
+usage: compare_bench.py BUILD_DIR SCENE... [--runs N] [--mistake NAME]
 BUILD_DIR holds Raytracer and tools/reference_render. The median of N runs (default 3).
 """
 import argparse
@@ -32,11 +34,14 @@ def main():
     parser.add_argument("build", type=pathlib.Path)
     parser.add_argument("scenes", nargs="+", type=pathlib.Path)
     parser.add_argument("--runs", type=int, default=3)
+    parser.add_argument("--mistake", default="no-shadows",
+                        help="the mistake of the wrong images (reference_render --help)")
     args = parser.parse_args()
     raytracer = args.build / "Raytracer"
     reference = args.build / "tools" / "reference_render"
-    print("| scene | image | verdict | search s | reference s | whole run s |")
-    print("|---|---|---|---|---|---|")
+    print("| scene | image | verdict | first cause | search s | reference s | causes s "
+          "| whole run s |")
+    print("|---|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as folder:
         folder = pathlib.Path(folder)
         for scene in args.scenes:
@@ -55,15 +60,24 @@ def main():
                     for r in range(height)]
             flipped = folder / f"{scene.stem}-flipped.ppm"
             flipped.write_bytes(data[:header_end] + b"".join(reversed(rows)))
-            for label, image in (("correct PNG", png), ("upside-down PPM", flipped)):
+            wrong = []
+            for suffix, extra in ((".png", []), (".jpg", ["--jpeg-quality", "75"])):
+                image = folder / f"{scene.stem}-{args.mistake}{suffix}"
+                subprocess.run([reference, str(scene), "-o", str(image), "--mistake",
+                                args.mistake] + extra, check=True, capture_output=True)
+                wrong.append((f"{args.mistake} {suffix[1:].upper()}", image))
+            for label, image in [("correct PNG", png), ("upside-down PPM", flipped)] + wrong:
                 runs = [compare(raytracer, image, scene) for _ in range(args.runs)]
                 walls = [wall for wall, _ in runs]
                 entry = runs[0][1]
                 search = statistics.median(e["search"]["seconds"] for _, e in runs)
                 ref = statistics.median(e["reference_seconds"] for _, e in runs)
+                causes = statistics.median(e["diagnosis_seconds"] for _, e in runs)
                 verdict = entry["verdict"] + (f" ({entry['options']})" if entry["options"] else "")
-                print(f"| {scene.name} | {label} | {verdict} | {search:.2f} | {ref:.2f} | "
-                      f"{statistics.median(walls):.2f} |", flush=True)
+                regions = entry["regions"]
+                cause = (regions[0].get("cause") or "none") if regions else "-"
+                print(f"| {scene.name} | {label} | {verdict} | {cause} | {search:.2f} | "
+                      f"{ref:.2f} | {causes:.2f} | {statistics.median(walls):.2f} |", flush=True)
     return 0
 
 

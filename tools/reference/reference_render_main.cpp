@@ -1,9 +1,12 @@
 // reference_render SCENE -o out.png [options]: the CPU reference renderer as a tool.
+#include "base/output_format.h"
+#include "compare/student_model.h"
 #include "reference/reference_renderer.h"
 #include "reference/reference_story.h"
 #include "scene/scene_loader.h"
 #include "tool_arguments.h"
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -20,7 +23,7 @@ const char* const usage =
     "usage: reference_render SCENE -o OUT [--width W] [--height H] [--depth D]\n"
     "                        [--spp N] [--background R,G,B] [--fov DEG] [--truncate]\n"
     "                        [--threads N] [--camera-pos X,Y,Z] [--camera-target X,Y,Z]\n"
-    "                        [--camera-up X,Y,Z] [--pixel X,Y]\n"
+    "                        [--camera-up X,Y,Z] [--pixel X,Y] [--mistake NAME]\n"
     "Renders SCENE with the double-precision CPU reference (the model of docs/model.md).\n"
     "SCENE may be an OBJ model, built as Raytracer builds it by default (docs/models.md).\n"
     "  -o OUT                 OUT.png: 8-bit; OUT.pfm or OUT.exr: float, each pixel's average\n"
@@ -37,7 +40,12 @@ const char* const usage =
     "  --camera-target X,Y,Z  point looked at, default 0,0,-1 from the eye\n"
     "  --camera-up X,Y,Z      up direction, default 0,1,0\n"
     "  --pixel X,Y            print pixel X,Y's ray tree as JSON on stdout, the fields of\n"
-    "                         Raytracer --pixel (docs/pixel_story.md); alone without -o\n";
+    "                         Raytracer --pixel (docs/pixel_story.md); alone without -o\n"
+    "  --mistake NAME         render as a tracer that makes one of the classic mistakes of\n"
+    "                         Raytracer compare's catalogue (docs/compare.md), one sample per\n"
+    "                         pixel: an image to try compare on; OUT may then also be\n"
+    "                         .jpg (stb's encoder) or .ppm\n"
+    "  --jpeg-quality Q       with --mistake and OUT.jpg: quality 1 to 100, default 90\n";
 
 using tool_arguments::parseCount;
 using tool_arguments::parseFov;
@@ -63,6 +71,41 @@ glm::ivec2 parsePixel(std::string_view option, std::string_view text) {
     return pixel;
 }
 
+// --mistake NAME: a mistake of the catalogue, by its name.
+Mistake parseMistake(std::string_view option, std::string_view text) {
+    std::string names;
+    for (const MistakeDescription& entry : mistakeCatalogue()) {
+        if (text == entry.name) return entry.mistake;
+        names += std::string(names.empty() ? "" : ", ") + entry.name;
+    }
+    throw UsageError(std::string(option) + " expects one of " + names + "; got '" +
+                     std::string(text) + "'");
+}
+
+// The scene as a tracer with mistake renders it: each pixel's colour clamped to [0, 1],
+// as floats, or as bytes rounded (or truncated) as the reference writes them.
+ImageF renderWithMistake(const Scene& scene, const ReferenceSettings& settings, Mistake mistake,
+                         int threads, Image8* bytes) {
+    std::vector<glm::ivec2> pixels;
+    for (int j = 0; j < settings.height; ++j)
+        for (int i = 0; i < settings.width; ++i)
+            pixels.emplace_back(i, j);
+    ReferenceSettings unclamped = settings;
+    unclamped.clampSamples = false;
+    ImageF image;
+    image.width = bytes->width = settings.width;
+    image.height = bytes->height = settings.height;
+    for (const glm::dvec3& c : studentColours(scene, unclamped, mistake, pixels, threads)) {
+        for (int k = 0; k < 3; ++k) {
+            const double v = std::clamp(c[k], 0.0, 1.0);
+            image.rgb.push_back(float(v));
+            bytes->rgba.push_back(std::uint8_t(quantizeChannel(v, settings.truncate)));
+        }
+        bytes->rgba.push_back(255);
+    }
+    return image;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -73,6 +116,8 @@ int main(int argc, char** argv) {
     bool pixelGiven = false;
     glm::ivec2 pixel(0);
     bool floatOutput = false; // -o OUT.pfm or OUT.exr
+    Mistake mistake = Mistake::None;
+    int jpegQuality = kDefaultJpegQuality;
     try {
         for (int k = 1; k < argc; ++k) {
             const std::string_view arg = argv[k];
@@ -113,6 +158,13 @@ int main(int argc, char** argv) {
                 pixelGiven = true;
             } else if (arg == "--truncate") {
                 settings.truncate = true;
+            } else if (arg == "--mistake") {
+                mistake = parseMistake(arg, value());
+            } else if (arg == "--jpeg-quality") {
+                jpegQuality = parseCount(arg, value(), 1);
+                if (jpegQuality > 100)
+                    throw UsageError("--jpeg-quality must be 1 to 100, got " +
+                                     std::to_string(jpegQuality));
             } else if (arg.starts_with("-")) {
                 throw UsageError("unknown option " + std::string(arg));
             } else if (scenePath.empty()) {
@@ -125,11 +177,21 @@ int main(int argc, char** argv) {
         if (scenePath.empty()) throw UsageError("no scene file given");
         if (outputPath.empty() && !pixelGiven)
             throw UsageError("no output given (-o OUT.png, or --pixel X,Y)");
+        if (mistake != Mistake::None && settings.spp != 1)
+            throw UsageError("--mistake renders one sample per pixel, not --spp " +
+                             std::to_string(settings.spp));
         if (pixelGiven && (pixel.x >= settings.width || pixel.y >= settings.height))
             throw UsageError("--pixel " + std::to_string(pixel.x) + "," + std::to_string(pixel.y) +
                              " lies outside the " + std::to_string(settings.width) + "x" +
                              std::to_string(settings.height) + " image");
-        if (!outputPath.empty()) {
+        if (!outputPath.empty() && mistake != Mistake::None) {
+            const std::optional<OutputFormat> format = outputFormatOf(outputPath);
+            if (!format || isStandardOutput(outputPath))
+                throw UsageError("-o " + outputPath +
+                                 ": with --mistake, the output must be a file name ending in "
+                                 ".png, .jpg, .jpeg, .ppm, .pfm or .exr");
+            floatOutput = holdsFloats(*format);
+        } else if (!outputPath.empty()) {
             const std::optional<ImageFormat> format = imageFormatOf(outputPath);
             if (!format)
                 throw UsageError("-o " + outputPath +
@@ -156,7 +218,15 @@ int main(int argc, char** argv) {
         if (!outputPath.empty()) {
             const auto start = std::chrono::steady_clock::now();
             std::chrono::duration<double> seconds{};
-            if (floatOutput) {
+            if (mistake != Mistake::None) {
+                Image8 bytes;
+                const ImageF image = renderWithMistake(scene, settings, mistake, threads, &bytes);
+                seconds = std::chrono::steady_clock::now() - start;
+                if (floatOutput)
+                    writeFloatImage(outputPath, image);
+                else
+                    writeImage8(outputPath, bytes, jpegQuality);
+            } else if (floatOutput) {
                 const ImageF image = renderReferenceFloat(scene, settings, threads);
                 seconds = std::chrono::steady_clock::now() - start;
                 writeFloatImage(outputPath, image);
