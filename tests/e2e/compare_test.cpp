@@ -607,9 +607,17 @@ TEST(Compare, ARegionSaysWhatItLiesOn) {
                             "     on the sphere of line 9 (100%)"),
               std::string::npos)
         << text.out;
-    // No mistake of the catalogue darkens a block of a sphere: said so, no cause invented.
+    // No mistake of the catalogue darkens a block of a sphere: said so, no cause invented,
+    // and its pixel's ray tree printed instead, in the text, the JSON and the page.
     EXPECT_NE(text.out.find("     cause: not explained by any known mistake"), std::string::npos)
         << text.out;
+    EXPECT_NE(text.out.find("the eye ray meets the sphere of line 9\n       its terms in the "
+                            "reference, and what the image implies"),
+              std::string::npos)
+        << text.out;
+    EXPECT_NE(json.out.find("\"ray_tree\": {\"x\": "), std::string::npos) << json.out;
+    EXPECT_NE(readWholeFile(dir / "report" / "index.html").find("its terms in the reference"),
+              std::string::npos);
     // The page outlines it on the heat map, in percent of the image: 93/320, 131/240, ...
     EXPECT_NE(readWholeFile(dir / "report" / "index.html")
                   .find("<div class=\"region\" style=\"left:29.0625%;top:54.5833%;width:3.125%;"

@@ -14,9 +14,9 @@
 #include "compare/comparison.h"
 #include "compare/jpeg_codec.h"
 #include "compare/student_model.h"
-#include "mistake_scene.h"
 #include "reference/reference_story.h"
 #include "scene/scene_loader.h"
+#include "student_model_support.h"
 
 #include <gtest/gtest.h>
 
@@ -68,19 +68,11 @@ const std::vector<std::pair<std::string, SceneChange>> kMistakeSceneVariants = {
 };
 
 std::vector<glm::ivec2> everyPixel() {
-    std::vector<glm::ivec2> pixels;
-    for (int j = 0; j < kHeight; ++j)
-        for (int i = 0; i < kWidth; ++i)
-            pixels.emplace_back(i, j);
-    return pixels;
+    return ::everyPixel(kWidth, kHeight);
 }
 
 ReferenceSettings settings() {
-    ReferenceSettings s;
-    s.width = kWidth;
-    s.height = kHeight;
-    s.clampSamples = false;
-    return s;
+    return unclampedSettings(kWidth, kHeight);
 }
 
 // The scene as a tracer with mistake writes it: colours clamped, rounded to levels.

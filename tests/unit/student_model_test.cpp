@@ -2,8 +2,8 @@
 // reference, to the bit, on every pixel; each mistake of its catalogue changes a scene made
 // to show it; ambient per light adds exactly what it should.
 #include "compare/student_model.h"
-#include "mistake_scene.h"
 #include "scene/scene_loader.h"
+#include "student_model_support.h"
 
 #include <gtest/gtest.h>
 
@@ -15,19 +15,11 @@ namespace {
 constexpr int kWidth = 64, kHeight = 48;
 
 std::vector<glm::ivec2> everyPixel() {
-    std::vector<glm::ivec2> pixels;
-    for (int j = 0; j < kHeight; ++j)
-        for (int i = 0; i < kWidth; ++i)
-            pixels.emplace_back(i, j);
-    return pixels;
+    return ::everyPixel(kWidth, kHeight);
 }
 
 ReferenceSettings settings() {
-    ReferenceSettings s;
-    s.width = kWidth;
-    s.height = kHeight;
-    s.clampSamples = false;
-    return s;
+    return unclampedSettings(kWidth, kHeight);
 }
 
 } // namespace

@@ -1,6 +1,31 @@
-// A scene made to show every mistake of the student model's catalogue
-// (host/compare/student_model.h), for the tests of the model and of the diagnosis.
+// For the tests of the model of another tracer (host/compare/student_model.h) and of the
+// diagnosis built on it: a scene made to show every mistake of its catalogue, every pixel of
+// an image, and the reference's settings for one with colours left unclamped.
 #pragma once
+
+#include "reference/reference_renderer.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+inline std::vector<glm::ivec2> everyPixel(int width, int height) {
+    std::vector<glm::ivec2> pixels;
+    for (int j = 0; j < height; ++j)
+        for (int i = 0; i < width; ++i)
+            pixels.emplace_back(i, j);
+    return pixels;
+}
+
+// The default camera, depth and background at this size; colours unclamped, as the
+// student model gives them.
+inline ReferenceSettings unclampedSettings(int width, int height) {
+    ReferenceSettings settings;
+    settings.width = width;
+    settings.height = height;
+    settings.clampSamples = false;
+    return settings;
+}
 
 // A floor whose highlight from the light above it, seen at (0, -1, -2) (the light mirrored in
 // the floor, seen from the eye), lies in the shadow of the first sphere, halfway between
