@@ -49,16 +49,19 @@ Trial blockPixels(const PixelMatch& match, Flip flip, std::size_t count) {
         const int x = int(p % std::size_t(match.width)), y = int(p / std::size_t(match.width));
         return std::size_t(y / kBlock) * std::size_t(columns) + std::size_t(x / kBlock);
     };
-    // Each region's blocks, in image order.
+    // Each region's blocks, in image order, each once.
+    const std::size_t blockCount = std::size_t(columns) * std::size_t(rows);
     std::vector<std::vector<std::size_t>> blocksOf(regions);
+    std::vector<std::vector<unsigned char>> listed(regions, std::vector<unsigned char>(blockCount));
     for (std::size_t p = 0; p < match.regionOf.size(); ++p) {
         const int r = match.regionOf[p];
         if (r < 0 || std::size_t(r) >= regions) continue;
-        std::vector<std::size_t>& blocks = blocksOf[std::size_t(r)];
         const std::size_t b = blockOf(p);
-        if (std::find(blocks.begin(), blocks.end(), b) == blocks.end()) blocks.push_back(b);
+        if (listed[std::size_t(r)][b]) continue;
+        listed[std::size_t(r)][b] = 1;
+        blocksOf[std::size_t(r)].push_back(b);
     }
-    std::vector<unsigned char> chosen(std::size_t(columns) * std::size_t(rows), 0);
+    std::vector<unsigned char> chosen(blockCount, 0);
     for (std::vector<std::size_t>& blocks : blocksOf) {
         std::sort(blocks.begin(), blocks.end());
         const std::size_t step = (blocks.size() + kBlocksPerRegion - 1) / kBlocksPerRegion;
