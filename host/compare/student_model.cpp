@@ -126,6 +126,16 @@ dvec3 studentRay(const World& world, const ReferenceSettings& settings, Ray ray,
     return color;
 }
 
+// A colour as a tracer that writes (unsigned char)(c * 255 + 0.5) without a clamp shows it:
+// a byte over 255 keeps its low 8 bits (1.1 becomes 25/255).
+dvec3 wrappedBytes(dvec3 colour) {
+    for (int c = 0; c < 3; ++c) {
+        const double byte = std::floor(colour[c] * 255.0 + 0.5);
+        if (byte > 255.0) colour[c] = std::fmod(byte, 256.0) / 255.0;
+    }
+    return colour;
+}
+
 } // namespace
 
 const std::vector<MistakeDescription>& mistakeCatalogue() {
@@ -160,6 +170,8 @@ const std::vector<MistakeDescription>& mistakeCatalogue() {
          "the far root of the sphere taken: its back is seen through its front"},
         {Mistake::WrongAspectRatio, "wrong-aspect-ratio",
          "a wrong aspect ratio: the horizontal angle taken equal to the vertical one"},
+        {Mistake::ColourNotClamped, "colour-not-clamped",
+         "colours over 1 not clamped: their bytes wrap around, so the brightest spots turn dark"},
     };
     return catalogue;
 }
@@ -175,6 +187,7 @@ std::vector<glm::dvec3> studentColours(const Scene& scene, const ReferenceSettin
     forEachEyeRay(camera, pixels, threads, [&]() -> EyeRayBody {
         return [&, path = std::vector<Bounce>()](std::size_t k, const Ray& ray) mutable {
             colours[k] = studentRay(world, settings, ray, mistake, path);
+            if (mistake == Mistake::ColourNotClamped) colours[k] = wrappedBytes(colours[k]);
         };
     });
     return colours;

@@ -31,7 +31,8 @@ enum class Mistake {
     ColourClampedPerBounce,   // each bounce's local colour clamped to [0, 1] before the blend
     BackFacesCulled,          // triangles seen against their winding are missed, by every ray
     SphereFarRoot,            // a sphere met at its far root, shaded with its outward normal
-    WrongAspectRatio          // the horizontal angle taken equal to the vertical one
+    WrongAspectRatio,         // the horizontal angle taken equal to the vertical one
+    ColourNotClamped          // a colour over 1 written as a byte without a clamp: it wraps
 };
 
 struct MistakeDescription {

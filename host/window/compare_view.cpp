@@ -21,9 +21,11 @@ Image8 bytesOf(const ImageF& levels) {
     image.height = levels.height;
     image.rgba.reserve(levels.rgb.size() / 3 * 4);
     for (std::size_t p = 0; p < levels.rgb.size(); p += 3) {
-        for (std::size_t k = 0; k < 3; ++k)
-            image.rgba.push_back(
-                std::uint8_t(std::clamp(std::lround(levels.rgb[p + k]), 0L, 255L)));
+        for (std::size_t k = 0; k < 3; ++k) {
+            const float level = levels.rgb[p + k]; // a float file's may be NaN or beyond 255
+            image.rgba.push_back(level > 0 ? std::uint8_t(std::lround(std::min(level, 255.0f)))
+                                           : 0);
+        }
         image.rgba.push_back(255);
     }
     return image;

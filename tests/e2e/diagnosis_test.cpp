@@ -75,14 +75,16 @@ ReferenceSettings settings() {
     return unclampedSettings(kWidth, kHeight);
 }
 
-// The scene as a tracer with mistake writes it: colours clamped, rounded to levels.
+// The scene as a tracer with mistake writes it: colours clamped, rounded to levels; NaN (a
+// power of a negative R.V, say) as 0, as the comparison presents it.
 ImageF levelsWith(const Scene& scene, Mistake mistake) {
     ImageF image;
     image.width = kWidth;
     image.height = kHeight;
     for (const glm::dvec3& c : studentColours(scene, settings(), mistake, everyPixel()))
         for (int k = 0; k < 3; ++k)
-            image.rgb.push_back(float(std::floor(std::clamp(c[k], 0.0, 1.0) * 255.0 + 0.5)));
+            image.rgb.push_back(
+                float(std::floor((c[k] > 0 ? std::min(c[k], 1.0) : 0.0) * 255.0 + 0.5)));
     return image;
 }
 

@@ -82,7 +82,8 @@ Mistake parseMistake(std::string_view option, std::string_view text) {
                      std::string(text) + "'");
 }
 
-// The scene as a tracer with mistake renders it: each pixel's colour clamped to [0, 1],
+// The scene as a tracer with mistake renders it: each pixel's colour clamped to [0, 1] (NaN
+// to 0, as compare presents it),
 // as floats, or as bytes rounded (or truncated) as the reference writes them.
 ImageF renderWithMistake(const Scene& scene, const ReferenceSettings& settings, Mistake mistake,
                          int threads, Image8* bytes) {
@@ -97,7 +98,7 @@ ImageF renderWithMistake(const Scene& scene, const ReferenceSettings& settings, 
     image.height = bytes->height = settings.height;
     for (const glm::dvec3& c : studentColours(scene, unclamped, mistake, pixels, threads)) {
         for (int k = 0; k < 3; ++k) {
-            const double v = std::clamp(c[k], 0.0, 1.0);
+            const double v = c[k] > 0 ? std::min(c[k], 1.0) : 0.0; // NaN (pow of a negative) too
             image.rgb.push_back(float(v));
             bytes->rgba.push_back(std::uint8_t(quantizeChannel(v, settings.truncate)));
         }
