@@ -192,7 +192,8 @@ std::vector<RegionDiagnosis> diagnoseRegions(const Scene& scene, const PixelMatc
             return overall(a) > overall(b);
         });
         if (!d.trials.empty() && d.trials.front().share >= kExplainingShare &&
-            d.trials.front().share >= d.referenceShare + 0.4)
+            d.trials.front().share >= d.referenceShare + 0.4 &&
+            d.trials.front().share * double(d.traced) >= double(kLeastExplainedPixels) - 1e-9)
             d.cause = d.trials.front();
     }
     return diagnoses;

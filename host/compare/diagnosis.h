@@ -21,8 +21,10 @@
 #include <vector>
 
 // The share of a region's traced pixels that must match with a mistake for it to explain
-// the region.
+// the region, and how many pixels at least: a handful of noise pixels (another encoder's
+// JPEG, near the tolerance) can match any mistake that moves them a little.
 inline constexpr double kExplainingShare = 0.6;
+inline constexpr long kLeastExplainedPixels = 8;
 
 struct MistakeTrial {
     const MistakeDescription* mistake = nullptr;
