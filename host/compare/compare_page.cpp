@@ -48,20 +48,6 @@ std::string escapeHtml(const std::string& text) {
     return out;
 }
 
-Image8 bytesOf(const ImageF& levels) {
-    Image8 image;
-    image.width = levels.width;
-    image.height = levels.height;
-    image.rgba.resize(std::size_t(levels.width) * std::size_t(levels.height) * 4);
-    for (std::size_t p = 0; p < image.rgba.size() / 4; ++p) {
-        for (std::size_t k = 0; k < 3; ++k)
-            image.rgba[4 * p + k] =
-                std::uint8_t(std::clamp(std::floor(levels.rgb[3 * p + k] + 0.5f), 0.0f, 255.0f));
-        image.rgba[4 * p + 3] = 255;
-    }
-    return image;
-}
-
 std::string pngData(const Image8& image) {
     return "data:image/png;base64," + base64(encodePng("the report's image", image));
 }
@@ -124,6 +110,22 @@ std::string regionOutlines(const PixelMatch& match) {
 
 } // namespace
 
+Image8 shownBytes(const ImageF& levels) {
+    Image8 image;
+    image.width = levels.width;
+    image.height = levels.height;
+    image.rgba.reserve(levels.rgb.size() / 3 * 4);
+    for (std::size_t p = 0; p < levels.rgb.size(); p += 3) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            const float level = levels.rgb[p + k]; // a float file's may be NaN or beyond 255
+            image.rgba.push_back(level > 0 ? std::uint8_t(std::lround(std::min(level, 255.0f)))
+                                           : 0);
+        }
+        image.rgba.push_back(255);
+    }
+    return image;
+}
+
 Image8 differenceHeatmap(const PixelMatch& match) {
     Image8 image;
     image.width = match.width;
@@ -154,8 +156,8 @@ Image8 differenceHeatmap(const PixelMatch& match) {
 }
 
 std::string comparisonPage(const Comparison& c) {
-    const std::string yours = pngData(bytesOf(c.image.levels));
-    const std::string reference = pngData(bytesOf(c.expected));
+    const std::string yours = pngData(shownBytes(c.image.levels));
+    const std::string reference = pngData(shownBytes(c.expected));
     const std::string title = "compare: " + c.imagePath.filename().string();
     std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
                        "<title>" +

@@ -19,6 +19,9 @@ std::string comparisonPage(const Comparison& comparison);
 std::string folderPage(const std::vector<Comparison>& comparisons,
                        const std::vector<std::string>& pageNames, const std::string& table);
 
+// Levels as the bytes a PNG of them holds: rounded, clamped to 0..255 (NaN to 0), alpha 255.
+Image8 shownBytes(const ImageF& levels);
+
 // The heat map: per pixel, grey where it matches; else blue (darker) or red (brighter),
 // full at 64 levels of difference or more.
 Image8 differenceHeatmap(const PixelMatch& match);

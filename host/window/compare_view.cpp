@@ -14,23 +14,6 @@
 
 namespace {
 
-// The image's levels as bytes (a float file's clamped), as a PNG of it would hold them.
-Image8 bytesOf(const ImageF& levels) {
-    Image8 image;
-    image.width = levels.width;
-    image.height = levels.height;
-    image.rgba.reserve(levels.rgb.size() / 3 * 4);
-    for (std::size_t p = 0; p < levels.rgb.size(); p += 3) {
-        for (std::size_t k = 0; k < 3; ++k) {
-            const float level = levels.rgb[p + k]; // a float file's may be NaN or beyond 255
-            image.rgba.push_back(level > 0 ? std::uint8_t(std::lround(std::min(level, 255.0f)))
-                                           : 0);
-        }
-        image.rgba.push_back(255);
-    }
-    return image;
-}
-
 const char* pictureName(ComparedPicture picture) {
     switch (picture) {
     case ComparedPicture::Render:
@@ -71,7 +54,7 @@ void upload(const Context& context, const Image& picture, const Image8& bytes) {
 void openCompareView(Viewer& viewer) {
     CompareView& view = viewer.compare;
     if (!view.comparison) return;
-    view.image = bytesOf(view.comparison->image.levels);
+    view.image = shownBytes(view.comparison->image.levels);
     view.difference = differenceHeatmap(view.comparison->match);
     // Sampled as well as copied: an image view needs a usage beyond transfers.
     view.picture = createImage(viewer.context, std::uint32_t(view.image.width),
