@@ -10,7 +10,8 @@ struct SurfacePoint {
     rvec3 geometricNormal; // unit, either side: the side a new ray leaves on picks the sign
     rvec3 normal;          // unit shading normal, flipped to face the incoming ray
     vec3 kd;               // diffuse colour
-    vec3 ks;               // specular colour, also the mirror weight
+    vec3 ks;               // specular colour
+    vec3 kr;               // mirror weight: ks times the material's mirror share
     float shininess;       // Phong exponent
     uint flatPatch;        // the hit triangle's flat patch, or NO_PATCH for a sphere
 };
@@ -77,6 +78,7 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
         GpuMaterial m = fetchMaterial(fetchSphereMaterialIndex(hit.index));
         s.kd = m.diffuseShininess.xyz;
         s.ks = m.specular.xyz;
+        s.kr = sceneHasMirrorShares ? s.ks * m.specular.w : s.ks;
         s.shininess = m.diffuseShininess.w;
         s.flatPatch = NO_PATCH;
     } else {
@@ -107,6 +109,11 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
         s.kd = kdShininess.xyz;
         s.shininess = kdShininess.w;
         s.ks = wf.x * ma.specular.xyz + wf.y * mb.specular.xyz + wf.z * mc.specular.xyz;
+        // Interpolated as the reference does: each corner's ks times its share.
+        s.kr = sceneHasMirrorShares ? wf.x * (ma.specular.xyz * ma.specular.w) +
+                                          wf.y * (mb.specular.xyz * mb.specular.w) +
+                                          wf.z * (mc.specular.xyz * mc.specular.w)
+                                    : s.ks;
         s.flatPatch = cornerWord(cornerA);
     }
     if (dot(s.normal, ray.direction) > 0.0) s.normal = -s.normal;

@@ -102,6 +102,9 @@ using uint = std::uint32_t;
 // bool: count the hierarchy's work into GpuKernelStatus (--count-work, hidden): a measure of
 // a kernel change that no timing noise moves.
 #define SPEC_COUNT_WORK 16
+// bool: some material's mirror share (GpuMaterial's specular.w) is not 1, so the mirror
+// weight is not simply ks (a highlight without a mirror: MTL illum 2).
+#define SPEC_HAS_MIRROR_SHARES 17
 // The most spheres baked in: the closest-hit loop over them is unrolled, one test each.
 #define MAX_BAKED_SPHERES 15u
 #define RAY_OFFSET_FIXED 0u       // 1e-4 along the normal
@@ -130,7 +133,7 @@ using uint = std::uint32_t;
 // A material, shared by every sphere and vertex that uses it. 32 bytes.
 struct GpuMaterial {
     vec4 diffuseShininess; // kd in xyz, Phong exponent in w
-    vec4 specular;         // ks in xyz (also the mirror weight), w unused
+    vec4 specular;         // ks in xyz; w: the share of ks that is the mirror weight
 };
 
 // A point light. 32 bytes.

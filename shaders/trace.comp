@@ -25,6 +25,9 @@ layout(constant_id = SPEC_HAS_TRIANGLES) const bool sceneHasTriangles = true;
 // some material has ks > 0 (else no highlight).
 layout(constant_id = SPEC_HAS_MIRRORS) const bool sceneHasMirrors = true;
 layout(constant_id = SPEC_HAS_SPECULAR) const bool sceneHasSpecular = true;
+// Whether some material's mirror share is not 1 (a highlight without a mirror): else the
+// mirror weight is ks itself.
+layout(constant_id = SPEC_HAS_MIRROR_SHARES) const bool sceneHasMirrorShares = true;
 
 // The method choices of the command line (host/packing/kernel_choices.h); the defaults are the
 // robust methods, and the unchosen method is compiled out.
@@ -130,8 +133,9 @@ layout(set = 0, binding = BINDING_PIXEL_STORY, std430) buffer PixelStoryBuffer {
 #include "shade.glsl"
 
 // Colour seen along a primary ray: the model's recursion
-//   colour = (1 - ks) local + ks colour(reflected)   (local alone when ks == 0 or at depth D)
-// unrolled into a loop that carries the product of the ks seen so far (throughput). Each
+//   colour = (1 - kr) local + kr colour(reflected)   (local alone when kr == 0 or at depth D)
+// with the mirror weight kr (ks times the material's mirror share, docs/model.md),
+// unrolled into a loop that carries the product of the kr seen so far (throughput). Each
 // pass shades a hit and traces the mirror ray; the miss test closes the loop, where
 // lavapipe leaves it (do-while: see traverseBvh in bvh.glsl): with the trace and the test
 // at the top, a vector whose rays had all missed still ran the shading once, masked.
@@ -147,12 +151,12 @@ vec3 traceRay(Ray ray) {
             SurfacePoint s = surfaceAt(ray, hit);
             vec3 local = shadePhong(s, -ray.direction);
             storySurface(s.normal, s.kd, s.ks, s.shininess, local, throughput);
-            if (!sceneHasMirrors || all(equal(s.ks, vec3(0.0))) || bounce >= maxBounces)
-                return storyLast(all(equal(s.ks, vec3(0.0))) ? STORY_NEXT_NO_MIRROR
+            if (!sceneHasMirrors || all(equal(s.kr, vec3(0.0))) || bounce >= maxBounces)
+                return storyLast(all(equal(s.kr, vec3(0.0))) ? STORY_NEXT_NO_MIRROR
                                                              : STORY_NEXT_DEPTH,
                                  throughput, local, color + throughput * local);
-            color += throughput * (1.0 - s.ks) * local;
-            throughput *= s.ks;
+            color += throughput * (1.0 - s.kr) * local;
+            throughput *= s.kr;
             storyReflect(color, throughput);
             // Nothing further can contribute: same result, fewer rays.
             if (all(equal(throughput, vec3(0.0)))) return color;

@@ -13,9 +13,11 @@ and ignored. `v x y z r g b` vertex colours become the corner's diffuse colour.
 --up turns the model's up axis onto +y.
 
 Materials (from the MTL files that mtllib names, looked up beside the OBJ):
-Kd becomes dif, Ks spe (the renderer also uses it as the mirror weight) and Ns
-shi; colours are clamped to [0, 1] and Ns to [0, 1000]. Faces without a known
-material get a light grey default.
+Kd becomes dif, Ks spe and Ns shi; colours are clamped to [0, 1] and Ns to
+[1, 1000]. illum 0 and 1 have no highlight (spe 0), 2 a highlight and no mirror
+(mir: 0), 3 and above Ks as the mirror weight too (no mir: line); a material
+without illum is taken as illum 2. Faces without a known material get a light
+grey default with a faint highlight and no mirror.
 
 The scene's camera sits at the origin looking down -z. --fit scales the model
 (uniformly) to 1.5 units across and puts it straight ahead, as far away as
@@ -43,8 +45,8 @@ import sys
 FMT = "%.9g"
 
 MAX_MTL_BYTES = 64 << 20  # the largest material library read (Raytracer's kMaxMtlBytes)
-DEFAULT_MATERIAL = {"dif": (0.75, 0.75, 0.75), "spe": (0.1, 0.1, 0.1), "shi": 30.0}
-MAX_SHININESS = 1000.0
+DEFAULT_MATERIAL = {"dif": (0.75, 0.75, 0.75), "spe": (0.1, 0.1, 0.1), "shi": 30.0, "mir": 0.0}
+MIN_SHININESS, MAX_SHININESS = 1.0, 1000.0
 
 
 class ConversionError(Exception):
@@ -140,11 +142,20 @@ def numbers(path, line, fields, count, what, optional=0):
     return values
 
 
+def apply_illum(material, illum):
+    """MTL's illumination model: 0 and 1 have no highlight, 2 a highlight and no mirror, 3
+    and above (reflection, glass, Fresnel: all a mirror here) Ks as the mirror weight too."""
+    if illum <= 1:
+        material["spe"] = (0.0, 0.0, 0.0)
+    material["mir"] = 1.0 if illum >= 3 else 0.0
+
+
 def read_mtl(path, warn):
     """{name: material} from an MTL file. A line that is wrong is a warning, not an error:
     the material it belongs to falls back to the default one (its other lines are not read),
     a line before any material is left out, and the model renders on."""
     materials, current, current_name, skipping = {}, None, None, False
+    illum_of = {}  # applied at the end: a Ks may follow its illum
     for line, text in logical_lines(path):
         fields = text.split("#", 1)[0].split()
         if not fields:
@@ -160,6 +171,7 @@ def read_mtl(path, warn):
                     raise ConversionError(path, line, "newmtl needs a name")
                 current, current_name = dict(DEFAULT_MATERIAL), " ".join(args)
                 materials[current_name] = current
+                illum_of.pop(current_name, None)  # a material of that name read before
             elif keyword in ("Kd", "Ks"):
                 if current is None:
                     raise ConversionError(path, line, "%s before any newmtl" % keyword)
@@ -174,11 +186,20 @@ def read_mtl(path, warn):
             elif keyword == "Ns":
                 if current is None:
                     raise ConversionError(path, line, "Ns before any newmtl")
-                current["shi"] = clamp(numbers(path, line, args, 1, "Ns")[0], 0.0, MAX_SHININESS)
-            # Ka, Ke, d, Tr, illum, Ni, maps: nothing in this renderer's model uses them.
+                current["shi"] = clamp(numbers(path, line, args, 1, "Ns")[0], MIN_SHININESS, MAX_SHININESS)
+            elif keyword == "illum":
+                if current is None:
+                    raise ConversionError(path, line, "illum before any newmtl")
+                illum = numbers(path, line, args, 1, "illum")[0]
+                if illum != math.floor(illum) or not 0 <= illum <= 10:
+                    raise ConversionError(path, line, "illum expects an illumination model, a whole number "
+                                          "0 to 10, got %s" % args[0])
+                illum_of[current_name] = int(illum)
+            # Ka, Ke, d, Tr, Ni, maps: nothing in this renderer's model uses them.
         except ConversionError as error:
             consequence = "; the line is left out"
             if current is not None:
+                illum_of.pop(current_name, None)
                 current.clear()
                 current.update(DEFAULT_MATERIAL)
                 skipping = True
@@ -187,6 +208,8 @@ def read_mtl(path, warn):
                 consequence = "; the lines up to the next newmtl are left out"
             place = "%s:%d: " % (error.path, error.line) if error.line else "%s: " % error.path
             warn(place + "warning: " + error.message + consequence)
+    for name, illum in illum_of.items():
+        apply_illum(materials[name], illum)
     if not materials:
         warn("%s: warning: no materials (newmtl) found" % path)
     return materials
@@ -195,6 +218,7 @@ def read_mtl(path, warn):
 class Model:
     def __init__(self):
         self.positions = []  # (x, y, z)
+        self.position_lines = []  # each position's v line, for messages
         self.colors = []  # (r, g, b) or None, per position
         self.normals = []  # vn, as given
         self.faces = []  # the position indices of each polygon, for smooth normals
@@ -352,6 +376,7 @@ def read_obj(path, warn):
             if len(values) == 5:
                 raise ConversionError(path, line, "v expects 3, 4, 6 or 7 numbers (x y z [w], or x y z r g b), got 5")
             model.positions.append(tuple(values[:3]))
+            model.position_lines.append(line)
             # x y z [w], or x y z r g b (a common extension) with a colour per vertex.
             model.colors.append(tuple(clamp(c, 0.0, 1.0) for c in values[3:6]) if len(values) >= 6 else None)
         elif keyword == "vn":
@@ -418,8 +443,14 @@ def read_obj(path, warn):
 FIT_SIZE = 1.5
 FRAME_SHARE = 0.8
 GROUND_SPAN = 100.0
-GROUND_MATERIAL = {"dif": (0.7, 0.7, 0.7), "spe": (0.0, 0.0, 0.0), "shi": 1.0}
-UP_AXES = ("x", "-x", "y", "-y", "z", "-z")
+GROUND_MATERIAL = {"dif": (0.7, 0.7, 0.7), "spe": (0.0, 0.0, 0.0), "shi": 1.0, "mir": 1.0}
+def up_axis(text):
+    """--up as users write it: an axis letter in either case, with an optional sign."""
+    axis = text[1:] if text[:1] in ("+", "-") else text
+    if axis.lower() not in ("x", "y", "z"):
+        raise argparse.ArgumentTypeError("expects an axis, x, y or z in either case with an optional sign "
+                                         "(z, Z, +z, -y), got '%s'" % text)
+    return ("-" if text[:1] == "-" else "") + axis.lower()
 
 
 def turn_up(v, up):
@@ -460,9 +491,9 @@ def newell_scale(positions):
 class SmoothNormals:
     """For face f and its position p: the normalised sum of the Newell normals of the
     faces around p (each face once, in file order) whose unit normal is within the crease
-    angle of f's, f itself always included."""
+    angle of f's, f itself always included. Faces left out (left_out[f]) count for no corner."""
 
-    def __init__(self, model, positions, crease):
+    def __init__(self, model, positions, crease, left_out):
         self.cosine = math.cos(crease * (math.pi / 180.0))
         self.everywhere = crease >= 180.0
         scale = newell_scale(positions)
@@ -471,7 +502,7 @@ class SmoothNormals:
         self.around = [[] for _ in positions]
         for f, face in enumerate(model.faces):
             for p in face:
-                if f not in self.around[p]:
+                if not left_out[f] and f not in self.around[p]:
                     self.around[p].append(f)
 
     def at(self, face, position):
@@ -480,6 +511,41 @@ class SmoothNormals:
             if self.everywhere or other == face or dot(self.unit[face], self.unit[other]) >= self.cosine:
                 total = add(total, self.newell[other])
         return normalize(total)
+
+
+FAR_BEYOND = 1000.0
+
+
+def far_positions(positions):
+    """[bool] per position: further than FAR_BEYOND times the model's spread from its median
+    point along some axis (the median and spread of the file's positions; a median of an
+    even count is the upper of the middle two; none when the spread is 0). Raytracer's
+    farPositions, operation for operation."""
+    count, middle = len(positions), len(positions) // 2
+    if count == 0:
+        return []
+    median, spread = [0.0, 0.0, 0.0], 0.0
+    for axis in range(3):
+        median[axis] = sorted(p[axis] for p in positions)[middle]
+        spread = max(spread, sorted(abs(p[axis] - median[axis]) for p in positions)[middle])
+    if not spread > 0.0:
+        return [False] * count
+    return [max(abs(p[axis] - median[axis]) for axis in range(3)) > FAR_BEYOND * spread for p in positions]
+
+
+def describe_far(model, far, left_out):
+    """(line, message) of the warning for far positions, as Raytracer words it."""
+    near = [p for p, f in zip(model.positions, far) if not f]
+    first = far.index(True)
+    short = lambda value: "%.6g" % value
+    extent = ", ".join("%s %s..%s" % ("xyz"[axis], short(min(p[axis] for p in near)), short(max(p[axis] for p in near)))
+                       for axis in range(3))
+    p = model.positions[first]
+    return model.position_lines[first], (
+        "%d vertex(es) far beyond the rest of the model (the first here, at %s %s %s: more than %s times the "
+        "model's spread from its median) are left out, with the faces that use them (%d "
+        "triangle(s)); without them the model spans %s" % (far.count(True), short(p[0]), short(p[1]), short(p[2]), short(FAR_BEYOND), left_out,
+                            extent))
 
 
 class Placement:
@@ -554,18 +620,24 @@ def vec(v):
     return "%s %s %s" % (fmt(v[0]), fmt(v[1]), fmt(v[2]))
 
 
-def write_scene(out, model, settings):
+def write_scene(out, model, settings, warn):
     """settings: up, crease, fit, fov, aspect, ground, rig, camera_pos, camera_target,
     camera_up, lights, ambient."""
     positions = [turn_up(p, settings.up) for p in model.positions]
     normals = [turn_up(n, settings.up) for n in model.normals]
-    placement = Placement(positions, settings.fit, settings.fov, settings.aspect)
-    smooth = SmoothNormals(model, positions, settings.crease)
+    # The fit, the floor and the rig are for the model without positions far beyond it.
+    far = far_positions(model.positions)
+    placement = Placement([p for p, f in zip(positions, far) if not f], settings.fit, settings.fov, settings.aspect)
+    far_faces = [any(far[p] for p in face) for face in model.faces]  # the faces that use one, left out
+    smooth = SmoothNormals(model, positions, settings.crease, far_faces)
     lights = (light_rig(placement, settings.camera_pos, settings.camera_target, settings.camera_up)
               if settings.rig else settings.lights)
 
-    triangles = []
+    triangles, far_triangles = [], 0
     for corners, material, _line, face in model.triangles:
+        if far_faces[face]:
+            far_triangles += 1
+            continue
         corner_positions = [positions[p] for p, _n in corners]
         if len({p for p, _n in corners}) < 3 or length(cross(sub(corner_positions[1], corner_positions[0]),
                                                              sub(corner_positions[2], corner_positions[0]))) == 0.0:
@@ -574,6 +646,11 @@ def write_scene(out, model, settings):
         triangles.append([(placement.place(positions[p]), normals[n] if n is not None else smooth.at(face, p),
                            model.colors[p] if model.colors[p] is not None else material["dif"], material)
                           for p, n in corners])
+    if True in far:
+        line, message = describe_far(model, far, far_triangles)
+        if not triangles:
+            raise ConversionError(settings.obj, line, message + ": nothing is left to render")
+        warn("%s:%d: warning: %s" % (settings.obj, line, message))
     if not triangles:
         raise ConversionError(settings.obj, 0, "every one of the model's %d triangles is degenerate (two "
                               "corners at one position, or no area): nothing is left to render"
@@ -591,6 +668,8 @@ def write_scene(out, model, settings):
         for position, normal, dif, material in triangle:
             out.write("pos: %s\nnor: %s\ndif: %s\nspe: %s\nshi: %s\n" % (
                 vec(position), vec(normal), vec(dif), vec(material["spe"]), fmt(material["shi"])))
+            if material["mir"] != 1.0:  # the classic model's share goes unsaid
+                out.write("mir: %s\n" % fmt(material["mir"]))
     return len(triangles)
 
 
@@ -640,8 +719,9 @@ def main(argv=None):
     parser.add_argument("--fit", action="store_true",
                         help="scale the model to %g units across and put it straight ahead of the camera, "
                              "filling %d%%%% of the view (of --fov, --width and --height)" % (FIT_SIZE, FRAME_SHARE * 100))
-    parser.add_argument("--up", choices=UP_AXES, default="y",
-                        help="the model's axis that is up, turned onto +y (default y)")
+    parser.add_argument("--up", type=up_axis, default="y", metavar="AXIS",
+                        help="the model's axis that is up, turned onto +y: x, y or z in either case with an "
+                             "optional sign (z, Z, +z, -y; default y)")
     parser.add_argument("--crease", type=crease_angle, default=60.0, metavar="DEG",
                         help="a corner without a normal averages the faces around it within DEG degrees of "
                              "its own (0: flat, 180: smooth everywhere; default 60)")
@@ -683,13 +763,13 @@ def main(argv=None):
             temporary = args.out + ".tmp"
             try:
                 with open(temporary, "w", encoding="ascii", newline="\n") as out:
-                    count = write_scene(out, model, args)
+                    count = write_scene(out, model, args, warn)
             except ConversionError:
                 os.remove(temporary)  # never a half-written scene
                 raise
             os.replace(temporary, args.out)  # never a half-written scene
         else:
-            count = write_scene(sys.stdout, model, args)
+            count = write_scene(sys.stdout, model, args, warn)
     except ConversionError as error:
         print(error, file=sys.stderr)
         return 1

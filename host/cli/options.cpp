@@ -52,6 +52,22 @@ const ChoiceNames<UpAxis>& upAxisNames() {
     return names;
 }
 
+UpAxis parseUpAxis(const std::string& flag, const std::string& text) {
+    std::string_view axis = text;
+    const bool negative = !axis.empty() && axis[0] == '-';
+    if (!axis.empty() && (axis[0] == '-' || axis[0] == '+')) axis.remove_prefix(1);
+    if (axis.size() == 1) {
+        const char letter = static_cast<char>(axis[0] | 0x20); // ASCII lower case
+        if (letter == 'x') return negative ? UpAxis::NegX : UpAxis::PosX;
+        if (letter == 'y') return negative ? UpAxis::NegY : UpAxis::PosY;
+        if (letter == 'z') return negative ? UpAxis::NegZ : UpAxis::PosZ;
+    }
+    throw UsageError(flag +
+                     " expects an axis, x, y or z in either case with an optional sign "
+                     "(z, Z, +z, -y), got '" +
+                     text + "'");
+}
+
 ObjSceneSetup objSceneSetup(const Options& options) {
     ObjSceneSetup setup;
     setup.up = options.modelUp;
@@ -147,7 +163,8 @@ std::string usageText() {
            "  --snapshots K,K,...   window: write a screenshot, as P does, when refinement "
            "reaches\n"
            "                        each of these samples per pixel (at most --spp N)\n"
-           "  --up y|-y|z|-z|x|-x  an OBJ model's axis that is up (default y)\n"
+           "  --up AXIS             an OBJ model's axis that is up: x, y or z, either case,\n"
+           "                        optionally signed (z, Z, +z, -y; default y)\n"
            "  --crease DEG          an OBJ model's corners without normals average the faces\n"
            "                        around them within DEG degrees of their own (0: flat, 180:\n"
            "                        smooth everywhere; default 60)\n"
@@ -207,7 +224,7 @@ Options parseOptions(int argc, const char* const* argv) {
             options.saveScenePath = value();
             if (options.saveScenePath.empty()) throw UsageError(arg + " expects a file name");
         } else if (arg == "--up") {
-            options.modelUp = parseChoice(arg, value(), upAxisNames());
+            options.modelUp = parseUpAxis(arg, value());
             noteModelOnly(given, arg);
         } else if (arg == "--crease") {
             noteModelOnly(given, arg);

@@ -91,8 +91,11 @@ struct Options {
 
 // --accel's names, in the order --help lists them.
 const ChoiceNames<Acceleration>& accelerationNames();
-// --up's names: y, -y, z, -z, x, -x.
+// --up's names as printed: y, -y, z, -z, x, -x.
 const ChoiceNames<UpAxis>& upAxisNames();
+// --up's value as users write it: an axis letter in either case, with an optional sign
+// (z, Z, +z, -y).
+UpAxis parseUpAxis(const std::string& flag, const std::string& text);
 
 // How loadScene makes an OBJ model a scene for these options: theirs, and the view's field
 // of view and aspect ratio for the framing.

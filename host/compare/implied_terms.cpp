@@ -70,7 +70,7 @@ RayTreeReading readRayTreeAt(const Scene& scene, const ImageF& levels,
         return reading;
     }
     const bool reflects = std::string(eye.next) == "reflect";
-    const glm::dvec3 ks = eye.material.specular;
+    const glm::dvec3 ks = eye.mirrorWeight;
     const glm::dvec3 localWeight = reflects ? 1.0 - ks : glm::dvec3(1.0);
     add("ambient", scene.ambient, localWeight);
     for (std::size_t l = 0; l < eye.lights.size() && l < scene.lights.size(); ++l) {

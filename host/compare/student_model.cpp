@@ -36,6 +36,7 @@ SurfacePoint studentSurface(const World& world, const Ray& ray, const Hit& hit, 
         if (glm::dot(p.normal, ray.dir) > 0) p.normal = -p.normal;
     } else {
         p.material = v[0].material;
+        p.mirrorWeight = mirrorWeight(v[0].material);
     }
     return p;
 }
@@ -110,7 +111,7 @@ dvec3 studentRay(const World& world, const ReferenceSettings& settings, Ray ray,
         const SurfacePoint p = studentSurface(world, ray, hit, mistake);
         dvec3 local = studentLocal(world, p, -glm::normalize(ray.dir), hit.id, mistake);
         if (mistake == Mistake::ColourClampedPerBounce) local = glm::clamp(local, 0.0, 1.0);
-        const dvec3 ks = p.material.specular;
+        const dvec3 ks = p.mirrorWeight;
         if (bounce >= settings.depth || ks == dvec3(0.0)) {
             color = local;
             break;

@@ -34,7 +34,8 @@ glm::vec4 toVec4(const glm::dvec3& v, double w = 0.0) {
 }
 
 gpu::GpuMaterial toGpuMaterial(const Material& material) {
-    return {toVec4(material.diffuse, material.shininess), toVec4(material.specular)};
+    return {toVec4(material.diffuse, material.shininess),
+            toVec4(material.specular, material.mirror)};
 }
 
 // A vertex as the GPU stores it, the unit of vertex deduplication.

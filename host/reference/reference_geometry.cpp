@@ -119,6 +119,7 @@ SurfacePoint surfaceAt(const World& world, const Ray& ray, const Hit& hit) {
         const Sphere& sphere = world.scene.spheres[std::size_t(hit.id)];
         p.normal = (p.position - sphere.center) / sphere.radius;
         p.material = sphere.material;
+        p.mirrorWeight = mirrorWeight(sphere.material);
     } else {
         const Triangle tri = triangleAt(world.scene, std::size_t(hit.id - world.sphereCount));
         const Vertex* v = tri.vertices;
@@ -135,6 +136,7 @@ SurfacePoint surfaceAt(const World& world, const Ray& ray, const Hit& hit) {
         p.material.diffuse = w.x * m0.diffuse + w.y * m1.diffuse + w.z * m2.diffuse;
         p.material.specular = w.x * m0.specular + w.y * m1.specular + w.z * m2.specular;
         p.material.shininess = w.x * m0.shininess + w.y * m1.shininess + w.z * m2.shininess;
+        p.mirrorWeight = w.x * mirrorWeight(m0) + w.y * mirrorWeight(m1) + w.z * mirrorWeight(m2);
     }
     if (glm::dot(p.normal, ray.dir) > 0) p.normal = -p.normal;
     return p;

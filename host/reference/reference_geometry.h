@@ -53,6 +53,8 @@ struct SurfacePoint {
     dvec3 position;
     dvec3 normal; // unit, facing the incoming ray
     Material material;
+    // The mirror weight: ks times the mirror share; on a triangle each corner's, interpolated.
+    dvec3 mirrorWeight{0.0};
 };
 
 struct Camera {

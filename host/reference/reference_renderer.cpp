@@ -113,8 +113,8 @@ void storyColors(ReferenceStory& story) {
     for (StoryBounceRecord& b : story.bounces) {
         b.throughput = throughput;
         const bool reflects = std::string(b.next) == "reflect";
-        color += throughput * (reflects ? 1.0 - b.material.specular : dvec3(1.0)) * b.local;
-        throughput *= b.material.specular;
+        color += throughput * (reflects ? 1.0 - b.mirrorWeight : dvec3(1.0)) * b.local;
+        throughput *= b.mirrorWeight;
         b.color = color;
     }
 }
@@ -147,13 +147,14 @@ PathEnd followPath(const World& world, const ReferenceSettings& settings, Ray ra
         const SurfacePoint p = surfaceAt(world, ray, hit);
         const dvec3 view = -glm::normalize(ray.dir);
         const dvec3 local = shadeLocal(world, p, view, hit.id, record ? &record->lights : nullptr);
-        const dvec3 ks = p.material.specular;
+        const dvec3 ks = p.mirrorWeight;
         if (record) {
             record->hit = storyPrimitive(world, hit.id);
             record->t = hit.t;
             if (hit.id >= world.sphereCount) record->barycentric = hit.weights;
             record->normal = p.normal;
             record->material = p.material;
+            record->mirrorWeight = p.mirrorWeight;
             record->local = local;
             record->next = ks == dvec3(0.0)           ? "no-mirror"
                            : bounce >= settings.depth ? "depth"
@@ -256,7 +257,7 @@ std::vector<EyeRayFacts> referenceEyeRays(const Scene& scene, const ReferenceSet
             const SurfacePoint p = surfaceAt(world, ray, hit);
             EyeRayFacts& out = facts[k];
             out.hit = storyPrimitive(world, hit.id);
-            out.onMirror = settings.depth > 0 && p.material.specular != dvec3(0.0);
+            out.onMirror = settings.depth > 0 && p.mirrorWeight != dvec3(0.0);
             for (const Light& light : scene.lights) {
                 const dvec3 toLight = light.position - p.position;
                 const double distance = glm::length(toLight);

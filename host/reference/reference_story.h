@@ -35,6 +35,7 @@ struct StoryBounceRecord {
     glm::dvec3 barycentric{0.0};
     glm::dvec3 normal{0.0};
     Material material;
+    glm::dvec3 mirrorWeight{0.0}; // ks times the mirror share (SurfacePoint)
     std::vector<StoryLightRecord> lights;
     glm::dvec3 local{0.0}; // the local Phong colour; a miss: the background
     glm::dvec3 throughput{1.0}, color{0.0};

@@ -131,18 +131,24 @@ TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderS
     specialization.hasTriangles = !packed.triangles.empty();
     // Spheres and vertices only refer to materials in the list, so a ks > 0 that no
     // primitive uses is impossible; the check is on the float values the kernel reads.
-    const bool anySpecular = std::any_of(
-        packed.materials.begin(), packed.materials.end(), [](const gpu::GpuMaterial& m) {
-            return m.specular.x > 0.0f || m.specular.y > 0.0f || m.specular.z > 0.0f;
-        });
-    specialization.hasSpecular = anySpecular;
-    specialization.hasMirrors = anySpecular && settings.depth > 0;
+    const auto& materials = packed.materials;
+    auto hasKs = [](const gpu::GpuMaterial& m) {
+        return m.specular.x > 0.0f || m.specular.y > 0.0f || m.specular.z > 0.0f;
+    };
+    auto mirrors = [&](const gpu::GpuMaterial& m) { return hasKs(m) && m.specular.w > 0.0f; };
+    auto shares = [&](const gpu::GpuMaterial& m) { return hasKs(m) && m.specular.w != 1.0f; };
+    specialization.hasSpecular = std::any_of(materials.begin(), materials.end(), hasKs);
+    specialization.hasMirrors =
+        settings.depth > 0 && std::any_of(materials.begin(), materials.end(), mirrors);
+    specialization.hasMirrorShares =
+        specialization.hasMirrors && std::any_of(materials.begin(), materials.end(), shares);
     if (settings.generalKernel) {
         // Every content-dependent part stays in: the kernel any scene could run. The
         // spheres' and triangles' loops still stop at their counts (0 for an absent kind),
         // and the reflection loop at depth and ks = 0, so the image does not change.
         specialization.hasSpheres = specialization.hasTriangles = VK_TRUE;
         specialization.hasSpecular = specialization.hasMirrors = VK_TRUE;
+        specialization.hasMirrorShares = VK_TRUE;
     }
     // A small scene's spheres baked in (shaders/baked_spheres.glsl): on the brute-force path
     // only, and not for the general kernel, whose point is to run any scene.

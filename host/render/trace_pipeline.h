@@ -23,7 +23,9 @@ struct TraceSpecialization {
     std::uint32_t rayOffset = RAY_OFFSET_SCALED; // --offset
     VkBool32 hasMirrors = VK_TRUE;  // some material has ks > 0 and depth > 0: reflection loop
     VkBool32 hasSpecular = VK_TRUE; // some material has ks > 0: the Phong highlight
-    VkBool32 texelReads = VK_TRUE;  // hot arrays through texel buffers (else storage buffers)
+    // Some material's mirror share is not 1: the mirror weight is ks times it (else ks).
+    VkBool32 hasMirrorShares = VK_TRUE;
+    VkBool32 texelReads = VK_TRUE; // hot arrays through texel buffers (else storage buffers)
     // A small scene's spheres baked in (shaders/baked_spheres.glsl), and the sphere and
     // light counts the kernel is then compiled for.
     VkBool32 bakedSpheres = VK_FALSE;

@@ -13,9 +13,19 @@
 
 struct Material {
     glm::dvec3 diffuse{0.0};  // kd, "dif:"
-    glm::dvec3 specular{0.0}; // ks, "spe:"; also the mirror weight of the reflection
+    glm::dvec3 specular{0.0}; // ks, "spe:"
     double shininess = 0.0;   // Phong exponent, "shi:"
+    // The share of ks that is the mirror weight of the reflection, "mir:" (optional, 0 to
+    // 1): 1 in the classic model, where ks is both; 0 for a highlight without a mirror
+    // (MTL illum 2).
+    double mirror = 1.0;
 };
+
+// The weight of the mirror reflection: ks times the mirror share (ks itself, to the bit,
+// in the classic model).
+inline glm::dvec3 mirrorWeight(const Material& material) {
+    return material.specular * material.mirror;
+}
 
 // One entry of a mesh's material table.
 struct MeshMaterial {

@@ -25,6 +25,7 @@ struct ObjTriangle {
 
 struct ObjModel {
     std::vector<glm::dvec3> positions;
+    std::vector<std::int64_t> positionLines; // each position's `v` line, for messages
     // `v x y z r g b` (a common extension): the vertex's diffuse colour, clamped to [0, 1].
     std::vector<std::optional<glm::dvec3>> colors;
     std::vector<glm::dvec3> normals; // vn, as given
@@ -48,9 +49,10 @@ inline std::span<const std::uint32_t> facePositions(const ObjModel& model, std::
         .subspan(model.faceStarts[face], model.faceStarts[face + 1] - model.faceStarts[face]);
 }
 
-// The material of faces that name none, or one that no material library defines: light grey.
+// The material of faces that name none, or one that no material library defines, and what
+// an MTL material starts from: light grey, a faint highlight and no mirror (illum 2).
 inline MeshMaterial defaultObjMaterial() {
-    return MeshMaterial{Material{glm::dvec3(0.75), glm::dvec3(0.1), 30.0}, {}};
+    return MeshMaterial{Material{glm::dvec3(0.75), glm::dvec3(0.1), 30.0, 0.0}, {}};
 }
 
 // The largest material library read: far beyond any real one (a few kilobytes a material).
@@ -58,3 +60,6 @@ inline constexpr std::uintmax_t kMaxMtlBytes = std::uintmax_t(64) << 20;
 
 // Ns above this is clamped: the Phong exponent of the scene format has no use for more.
 inline constexpr double kMaxObjShininess = 1000.0;
+// Ns below this is raised to it: an exponent of 0 would give every lit point the full
+// highlight colour; 1 is the broadest highlight that still falls off.
+inline constexpr double kMinObjShininess = 1.0;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -137,6 +138,14 @@ std::string textureFileName(const Statement& statement) {
     return i < words.size() ? joinWords(words, i) : std::string();
 }
 
+// MTL's illumination model applied to a material read with it: 0 and 1 have no highlight,
+// 2 a highlight and no mirror, 3 and above (reflection, glass, Fresnel: all a mirror to
+// this renderer) ks as the mirror weight too, as in a scene file.
+void applyIllum(Material& material, int illum) {
+    if (illum <= 1) material.specular = glm::dvec3(0.0);
+    material.mirror = illum >= 3 ? 1.0 : 0.0;
+}
+
 // newmtl name -> index into the model's materials, from one MTL file. A line that is wrong
 // is a warning, not an error: the material it belongs to falls back to the default one
 // (its other lines are not read), a line before any material is left out, and the model
@@ -146,6 +155,7 @@ void readMtl(const MtlFile& file, ObjModel& model, std::map<std::string, std::ui
     std::string currentName;
     bool skipping = false; // the current material's lines are not read (one was wrong)
     bool any = false;
+    std::map<std::uint32_t, int> illumOf; // applied at the end: a Ks may follow its illum
     forEachStatement(*file.text, [&](const Statement& statement) {
         const Place place{file.path, statement.line};
         const std::string_view keyword = statement.words[0];
@@ -177,15 +187,24 @@ void readMtl(const MtlFile& file, ObjModel& model, std::map<std::string, std::ui
                 (keyword == "Kd" ? material.diffuse : material.specular) = clampedColor(rgb, 0);
             } else if (keyword == "Ns") {
                 if (!current) place.fail("Ns before any newmtl");
-                model.materials[*current].phong.shininess =
-                    std::clamp(numbers(place, statement, 1, "Ns")[0], 0.0, kMaxObjShininess);
+                model.materials[*current].phong.shininess = std::clamp(
+                    numbers(place, statement, 1, "Ns")[0], kMinObjShininess, kMaxObjShininess);
+            } else if (keyword == "illum") {
+                if (!current) place.fail("illum before any newmtl");
+                const double illum = numbers(place, statement, 1, "illum")[0];
+                if (illum != std::floor(illum) || illum < 0 || illum > 10)
+                    place.fail("illum expects an illumination model, a whole number 0 to 10, "
+                               "got " +
+                               std::string(statement.words[1]));
+                illumOf[*current] = static_cast<int>(illum);
             } else if (keyword == "map_Kd" && current) {
                 model.materials[*current].diffuseTexture = textureFileName(statement);
             }
-            // Ka, Ke, d, Tr, illum, Ni, other maps: nothing in this renderer's model uses them.
+            // Ka, Ke, d, Tr, Ni, other maps: nothing in this renderer's model uses them.
         } catch (const SceneError& error) {
             std::string consequence = "; the line is left out";
             if (current) {
+                illumOf.erase(*current);
                 model.materials[*current] = defaultObjMaterial();
                 skipping = true;
                 consequence = "; material '" + currentName + "' is the default one";
@@ -196,6 +215,8 @@ void readMtl(const MtlFile& file, ObjModel& model, std::map<std::string, std::ui
                                      "warning: " + error.message + consequence);
         }
     });
+    for (const auto& [material, illum] : illumOf)
+        applyIllum(model.materials[material].phong, illum);
     if (!any) model.warnings.push_back(file.path + ": warning: no materials (newmtl) found");
 }
 
@@ -278,6 +299,7 @@ ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlL
             if (values.size() == 5)
                 place.fail("v expects 3, 4, 6 or 7 numbers (x y z [w], or x y z r g b), got 5");
             model.positions.emplace_back(values[0], values[1], values[2]);
+            model.positionLines.push_back(statement.line);
             // x y z [w], or x y z r g b with a colour per vertex.
             model.colors.push_back(values.size() >= 6 ? std::optional(clampedColor(values, 3))
                                                       : std::nullopt);

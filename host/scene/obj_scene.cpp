@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <span>
 
@@ -77,16 +78,18 @@ double newellScale(const std::vector<glm::dvec3>& positions) {
 // The smooth normals of corners without one: for face f and its position p, the
 // normalised sum of the Newell normals of the faces around p (each face once, in file
 // order) whose unit normal is within the crease angle of f's, f itself always included.
+// Faces left out of the scene (leftOut[f], or none when it is empty) count for no corner.
 class SmoothNormals {
   public:
     SmoothNormals(const ObjModel& model, const std::vector<glm::dvec3>& positions,
-                  double creaseDegrees)
+                  double creaseDegrees, const std::vector<bool>& leftOut)
         : cosine_(std::cos(creaseDegrees * (kPi / 180.0))), everywhere_(creaseDegrees >= 180.0) {
         facesAround_.resize(positions.size());
         const double scale = newellScale(positions);
         for (std::size_t f = 0; f < faceCount(model); ++f) {
             newell_.push_back(newellNormal(positions, facePositions(model, f), scale));
             unit_.push_back(normalizedOrZero(newell_.back()));
+            if (!leftOut.empty() && leftOut[f]) continue;
             for (const std::uint32_t p :
                  facePositions(model, f)) // each face once, though p repeats
                 if (facesAround_[p].empty() || facesAround_[p].back() != f)
@@ -114,6 +117,83 @@ bool isDegenerate(const std::vector<glm::dvec3>& positions, const ObjTriangle& t
                         c = triangle.corners[2].position;
     if (a == b || b == c || a == c) return true;
     return length(glm::cross(positions[b] - positions[a], positions[c] - positions[a])) == 0.0;
+}
+
+// Positions far beyond the rest of the model, flagged: those further than kFarBeyond times
+// the model's spread from its median point along some axis. The median and the spread
+// (the largest, over the axes, of the median distance from the median coordinate) are
+// those of the file's positions, which a stray vertex or two cannot move; a vertex at 1e38
+// would otherwise set the fit, and the model shrink to a speck of rounding noise. A median
+// of an even count is the upper of the middle two. None is flagged when the spread is 0.
+constexpr double kFarBeyond = 1000.0;
+
+std::vector<bool> farPositions(const std::vector<glm::dvec3>& positions) {
+    const std::size_t count = positions.size(), middle = count / 2;
+    std::vector<bool> far(count, false);
+    if (count == 0) return far;
+    std::vector<double> values(count);
+    glm::dvec3 median(0.0);
+    double spread = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        for (std::size_t i = 0; i < count; ++i)
+            values[i] = positions[i][axis];
+        std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(middle), values.end());
+        median[axis] = values[middle];
+        for (std::size_t i = 0; i < count; ++i)
+            values[i] = std::abs(positions[i][axis] - median[axis]);
+        std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(middle), values.end());
+        spread = std::max(spread, values[middle]);
+    }
+    if (!(spread > 0.0)) return far;
+    for (std::size_t i = 0; i < count; ++i) {
+        const glm::dvec3 d = glm::abs(positions[i] - median);
+        far[i] = std::max({d.x, d.y, d.z}) > kFarBeyond * spread;
+    }
+    return far;
+}
+
+std::string shortNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return text;
+}
+
+// What is said of positions flagged by farPositions: how many, the first one's place, the
+// triangles left out with them, and the model's extent without them (in the file's
+// coordinates). The first one's line goes with it.
+struct FarPositions {
+    std::int64_t line = 0;
+    std::string message;
+};
+
+FarPositions describeFar(const ObjModel& model, const std::vector<bool>& far,
+                         std::size_t trianglesLeftOut) {
+    std::size_t count = 0, first = 0;
+    glm::dvec3 low(0.0), high(0.0);
+    bool anyNear = false;
+    for (std::size_t i = 0; i < far.size(); ++i) {
+        if (far[i]) {
+            if (count++ == 0) first = i;
+        } else {
+            low = anyNear ? glm::min(low, model.positions[i]) : model.positions[i];
+            high = anyNear ? glm::max(high, model.positions[i]) : model.positions[i];
+            anyNear = true;
+        }
+    }
+    const glm::dvec3 p = model.positions[first];
+    std::string extent;
+    for (int axis = 0; axis < 3; ++axis)
+        extent += std::string(axis == 0 ? "" : ", ") + "xyz"[axis] + " " + shortNumber(low[axis]) +
+                  ".." + shortNumber(high[axis]);
+    return {model.positionLines[first],
+            std::to_string(count) +
+                " vertex(es) far beyond the rest of the model (the first here, at " +
+                shortNumber(p.x) + " " + shortNumber(p.y) + " " + shortNumber(p.z) +
+                ": more than " + shortNumber(kFarBeyond) +
+                " times the model's spread from its median) are left out, with the faces that "
+                "use them (" +
+                std::to_string(trianglesLeftOut) + " triangle(s)); without them the model spans " +
+                extent};
 }
 
 // Where the model goes: p -> (p - centre) * scale + offset.
@@ -232,7 +312,20 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
     for (const glm::dvec3& n : model.normals)
         normals.push_back(turnUp(n, setup.up));
 
-    const Placement placement = placementOf(positions, setup);
+    // The fit, the floor and the rig are for the model without positions far beyond it.
+    const std::vector<bool> far = farPositions(model.positions);
+    const bool anyFar = std::find(far.begin(), far.end(), true) != far.end();
+    std::vector<glm::dvec3> near;
+    std::vector<bool> farFaces; // the faces that use one, left out
+    if (anyFar) {
+        for (std::size_t i = 0; i < positions.size(); ++i)
+            if (!far[i]) near.push_back(positions[i]);
+        farFaces.assign(faceCount(model), false);
+        for (std::size_t f = 0; f < faceCount(model); ++f)
+            for (const std::uint32_t p : facePositions(model, f))
+                farFaces[f] = farFaces[f] || far[p];
+    }
+    const Placement placement = placementOf(anyFar ? near : positions, setup);
     auto place = [&](glm::dvec3 p) {
         return (p - placement.centre) * placement.scale + placement.offset;
     };
@@ -254,8 +347,12 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
                                       [](const auto& color) { return color.has_value(); });
     std::vector<CornerKey> corners; // one per mesh vertex
     Deduplicator<CornerKey> vertexOf(corners, model.positions.size());
-    std::size_t degenerate = 0;
+    std::size_t degenerate = 0, farTriangles = 0;
     for (const ObjTriangle& source : model.triangles) {
+        if (anyFar && farFaces[source.face]) {
+            ++farTriangles;
+            continue;
+        }
         if (isDegenerate(positions, source)) {
             ++degenerate;
             continue;
@@ -265,7 +362,8 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
             const ObjCorner& corner = source.corners[k];
             CornerKey key;
             key.position = corner.position;
-            if (!corner.normal && !smooth) smooth.emplace(model, positions, setup.creaseDegrees);
+            if (!corner.normal && !smooth)
+                smooth.emplace(model, positions, setup.creaseDegrees, farFaces);
             key.normal =
                 corner.normal ? normals[*corner.normal] : smooth->at(source.face, corner.position);
             const std::size_t before = corners.size();
@@ -281,6 +379,14 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
         mesh.triangles.push_back(triangle);
         mesh.triangleMaterials.push_back(source.material);
         mesh.triangleLines.push_back(source.line);
+    }
+    if (anyFar) {
+        const FarPositions said = describeFar(model, far, farTriangles);
+        if (mesh.triangles.empty())
+            throw SceneError(fileName, static_cast<int>(said.line),
+                             said.message + ": nothing is left to render");
+        scene.warnings.push_back(sceneLocation(fileName, static_cast<int>(said.line)) +
+                                 "warning: " + said.message);
     }
     if (mesh.triangles.empty())
         throw SceneError(fileName, 0,

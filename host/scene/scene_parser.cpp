@@ -63,7 +63,7 @@ std::string objects(std::uint64_t count) {
 
 constexpr Key position{"pos:", "position"}, radius{"rad:", "radius"}, normal{"nor:", "normal"},
     diffuse{"dif:", "'dif:'"}, specular{"spe:", "'spe:'"}, shininess{"shi:", "shininess"},
-    color{"col:", "colour"}, ambient{"amb:", "ambient colour"};
+    mirror{"mir:", "mirror share"}, color{"col:", "colour"}, ambient{"amb:", "ambient colour"};
 
 std::string describe(const Field& field) {
     if (!field.key) return field.object ? quote(field.object) : "the object count";
@@ -174,6 +174,18 @@ Material Reader::readMaterial(const char* object, int vertex) {
     if (s.value < 0.0)
         fail(s.line, describe(field) + " must not be negative, found " + std::string(s.text));
     m.shininess = s.value;
+    // The optional mirror share (docs/model.md): a material without it mirrors by its ks,
+    // as in the classic format.
+    if (tokens.skipKey(mirror.text)) {
+        keyLine = lastLine = tokens.line;
+        const Field share{&mirror, object, vertex};
+        const Number number = readNumber(share);
+        if (!(number.value >= 0.0 && number.value <= 1.0))
+            fail(number.line,
+                 describe(share) + " must be between 0 and 1, found " + std::string(number.text));
+        m.mirror = number.value;
+        previous = share;
+    }
     return m;
 }
 

@@ -19,11 +19,11 @@ std::string triple(const glm::dvec3& v) {
     return shortest(v.x) + "," + shortest(v.y) + "," + shortest(v.z);
 }
 
-using MaterialKey = std::array<double, 7>;
+using MaterialKey = std::array<double, 8>;
 
 MaterialKey keyOf(const Material& m) {
     return {m.diffuse.x,  m.diffuse.y,  m.diffuse.z, m.specular.x,
-            m.specular.y, m.specular.z, m.shininess};
+            m.specular.y, m.specular.z, m.shininess, m.mirror};
 }
 
 } // namespace

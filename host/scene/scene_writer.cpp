@@ -31,6 +31,11 @@ void appendMaterial(std::string& out, const Material& material) {
     out += "shi: ";
     appendNumber(out, material.shininess);
     out += '\n';
+    if (material.mirror != 1.0) { // the classic model's share goes unsaid
+        out += "mir: ";
+        appendNumber(out, material.mirror);
+        out += '\n';
+    }
 }
 
 } // namespace

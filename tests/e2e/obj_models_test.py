@@ -60,6 +60,8 @@ MODELS = {
                    "curv 0 1\n", None),
     "crlf": ("v 0 0 0\r\nv 1 0 0\r\nv 0 1 1\r\nf 1 2 3\r\n", None),
     "cylinder": (None, None),  # filled in below: smooth sides, sharp rims
+    # a stray vertex far beyond the rest, on a face with the model's own: left out and named
+    "far_vertex": ("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 -2e30 7\nf 1 2 3 4\nf 2 5 3\nf 1 3 4\n", None),
 }
 
 # An 8-sided prism, z-up (2 tall, 1 across): sides 45 degrees apart, caps at 90.
@@ -78,6 +80,18 @@ def prism(sides=8):
 
 
 MODELS["cylinder"] = (prism(), None)
+
+# MTL's illumination models on one prism each: glossy (illum 2: a highlight, no mirror),
+# mirror (illum 3), matte (illum 1), and Ns 0, which is read as 1.
+ILLUM_MTL = ("newmtl glossy\nKd 0.7 0.2 0.1\nKs 0.8\nNs 40\nillum 2\n"
+             "newmtl mirror\nKd 0.7 0.2 0.1\nKs 0.8\nNs 40\nillum 3\n"
+             "newmtl matte\nKd 0.7 0.2 0.1\nKs 0.8\nillum 1\nnewmtl broad\nKs 0.5\nNs 0\n")
+def illum_model(material):
+    return "mtllib mats.mtl\nusemtl %s\n" % material + prism(8)
+
+
+MODELS["illum"] = ("mtllib mats.mtl\nusemtl glossy\n" + prism(6) + "usemtl mirror\nf 1 3 5\nusemtl matte\n"
+                   "f 2 4 6\nusemtl broad\nf 7 9 11\n", ILLUM_MTL)
 
 
 # A washer as one polygon of 66 corners (two circles of 32 joined by a bridge): concave,
@@ -318,6 +332,36 @@ class NativeModels(unittest.TestCase):
         self.assertEqual(ours.stderr.decode(), path + ": error: not an OBJ file: PLY models are not read; "
                          "convert it to OBJ first (for example with assimp export, Debian's assimp-utils)\n")
 
+    def test_illum_2_is_a_highlight_without_a_mirror(self):
+        # A glossy model (illum 2) reflects nothing: its pixels do not change when the sky
+        # (the background) turns from white to black, while the illum 3 model's do. Each
+        # renders as its saved scene (the scene format's mir: 0) and as the reference does.
+        size = ["--width", "120", "--height", "90", "--up", "z"]
+        changed = {}
+        for material in ("glossy", "mirror"):
+            path = write_model("illum_" + material, illum_model(material), ILLUM_MTL)
+            scene, direct, via_scene = path + ".scene", path + ".png", path + ".scene.png"
+            self.assertEqual(run(RAYTRACER, path, "--save-scene", scene, *size).returncode, 0)
+            self.assertEqual(b"mir: 0\n" in read(scene), material == "glossy")
+            drawn = run(RAYTRACER, path, "-o", direct, "--validate", *size)
+            self.assertEqual(drawn.returncode, 0, drawn.stderr)
+            self.assertEqual(run(RAYTRACER, scene, "-o", via_scene, *size[:4]).returncode, 0)
+            self.assertEqual(read(direct), read(via_scene))
+            # The reference has no --up: it renders the scene Raytracer built.
+            reference = path + ".reference.png"
+            self.assertEqual(run(REFERENCE, scene, "-o", reference, *size[:4]).returncode, 0)
+            compared = run(IMAGE_DIFF, direct, reference, "--tolerance", "2", "--min-match", "99.9")
+            self.assertEqual(compared.returncode, 0, compared.stdout + compared.stderr)
+            # A black sky: pixels that showed the sky change, and those that reflect it.
+            dark = path + ".dark.png"
+            self.assertEqual(run(RAYTRACER, scene, "-o", dark, "--background", "0,0,0", *size[:4]).returncode, 0)
+            _w, _h, a = pixels(direct)
+            _w, _h, b = pixels(dark)
+            changed[material] = sum(1 for y in range(90) for x in range(120)
+                                    if a[y][x] != b[y][x] and a[y][x] != (255, 255, 255))
+        self.assertEqual(changed["glossy"], 0)
+        self.assertGreater(changed["mirror"], 50)
+
     def test_the_model_renders_as_its_saved_scene(self):
         path = write_model("render", CUBE)
         scene, direct, via_scene = path + ".scene", path + ".png", path + ".scene.png"
@@ -333,21 +377,29 @@ class NativeModels(unittest.TestCase):
         self.assertIn(b"\ntriangles: 14\n", check.stdout)  # and the ground's two
 
 
+def scene_objects(path):
+    """The header's two lines, and each object's lines (its keyword first), of a scene file
+    as --save-scene writes it: one key and its numbers a line."""
+    lines = read(path).decode().split("\n")
+    header, objects = lines[:2], []
+    for line in lines[2:]:
+        if line in ("light", "sphere", "triangle"):
+            objects.append([line])
+        elif line:
+            objects[-1].append(line)
+    return header, objects
+
+
 def scene_triangles(path):
     """[(3 positions, 3 normals)] of a scene file as --save-scene writes it."""
-    tokens = read(path).decode().split()
-    result, i = [], 0
-    while i < len(tokens):
-        if tokens[i] == "triangle":
-            corners = []
-            for k in range(3):
-                at = i + 1 + 18 * k
-                corners.append((tuple(float(t) for t in tokens[at + 1:at + 4]),
-                                tuple(float(t) for t in tokens[at + 5:at + 8])))
-            result.append(corners)
-            i += 55
-        else:
-            i += 1
+    result = []
+    for lines in scene_objects(path)[1]:
+        if lines[0] != "triangle":
+            continue
+        fields = [line.split() for line in lines[1:]]
+        positions = [tuple(float(t) for t in f[1:]) for f in fields if f[0] == "pos:"]
+        normals = [tuple(float(t) for t in f[1:]) for f in fields if f[0] == "nor:"]
+        result.append(list(zip(positions, normals)))
     return result
 
 
@@ -375,12 +427,13 @@ class WhatAModelIsGiven(unittest.TestCase):
         scene = path + ".scene"
         self.assertEqual(run(RAYTRACER, path, "--save-scene", scene).returncode, 0)
         # The same lights and ground without the cube: the ground alone, unshadowed.
-        lines = read(scene).decode().split("\n")
-        lights = lines[2:2 + 3 * 3]
-        ground = lines[2 + 3 * 3 + 12 * 16:]
+        header, objects = scene_objects(scene)
+        lights = [line for lines in objects[:3] for line in lines]
+        ground = [line for lines in objects[-2:] for line in lines]
+        self.assertEqual(len(objects), 3 + 12 + 2)
         bare = path + ".bare.scene"
         with open(bare, "w") as handle:
-            handle.write("\n".join(["5", lines[1]] + lights + ground))
+            handle.write("\n".join(["5", header[1]] + lights + ground) + "\n")
         with_model, without = path + ".png", path + ".bare.png"
         for source, png in ((scene, with_model), (bare, without)):
             drawn = run(RAYTRACER, source, "-o", png, "--width", "160", "--height", "120")
@@ -438,13 +491,41 @@ class WhatAModelIsGiven(unittest.TestCase):
 
     def test_up_z_stands_a_z_up_model_upright(self):
         path = write_model("z_up", prism(8))  # 2 tall along z, 1 across
-        for up, tallest in (("y", 2), ("z", 1)):
+        for up, tallest in (("y", 2), ("z", 1), ("Z", 1), ("+z", 1), ("+Y", 2), ("-z", 1)):
             with self.subTest(up=up):
                 scene = path + ".%s.scene" % up
                 self.assertEqual(run(RAYTRACER, path, "--up", up, "--no-ground", "--save-scene", scene).returncode, 0)
                 positions = [c[0] for t in scene_triangles(scene) for c in t]
                 extents = [max(p[a] for p in positions) - min(p[a] for p in positions) for a in range(3)]
                 self.assertEqual(extents.index(max(extents)), tallest)
+        for wrong in ("w", "zz", "+-z", ""):
+            refused = run(RAYTRACER, path, "--up", wrong, "--check")
+            self.assertEqual(refused.returncode, 2, refused.stderr)
+            self.assertIn(b"--up expects an axis, x, y or z in either case with an optional sign (z, Z, +z, -y), "
+                          b"got '" + wrong.encode() + b"'", refused.stderr)
+
+    def test_a_vertex_far_beyond_the_rest_is_named_and_left_out(self):
+        # A cube and one more face through a vertex at 1e38 (an exporter's stray vertex):
+        # the fit ignores it, the face is left out, one warning names its line and the
+        # cube's extent, and the image is the plain cube's, byte for byte.
+        far = write_model("far_vertex", CUBE + "v 0.5 1e38 0.5\nf 1 2 -1\n")
+        plain = write_model("far_vertex_plain", CUBE)
+        size = ["--width", "96", "--height", "72"]
+        drawn = run(RAYTRACER, far, "-o", far + ".png", *size)
+        self.assertEqual(drawn.returncode, 0, drawn.stderr)
+        line = CUBE.count("\n") + 1
+        self.assertIn(("far_vertex.obj:%d: warning: 1 vertex(es) far beyond the rest of the model (the first here, "
+                       "at 0.5 1e+38 0.5: more than 1000 times the model's spread from its median) are left out, "
+                       "with the faces that use them (1 triangle(s)); without them the model spans x -1..1, "
+                       "y -1..1, z -1..1" % line).encode(), drawn.stderr)
+        self.assertEqual(run(RAYTRACER, plain, "-o", plain + ".png", *size).returncode, 0)
+        self.assertEqual(read(far + ".png"), read(plain + ".png"))
+        # A model of nothing but faces through far vertices is an error naming the first.
+        lone = write_model("far_only", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 1 1 1\nv 9e37 0 0\nf 1 2 6\n")
+        refused = run(RAYTRACER, lone, "--check")
+        self.assertEqual(refused.returncode, 3, refused.stderr)
+        self.assertIn(b"far_only.obj:6: error: 1 vertex(es) far beyond", refused.stderr)
+        self.assertIn(b": nothing is left to render", refused.stderr)
 
 
 def model_brightness(png):

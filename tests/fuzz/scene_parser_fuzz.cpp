@@ -27,8 +27,8 @@ namespace {
 // Every struct of a Scene is doubles and a 64-bit line only, without padding, so comparing
 // their bytes compares the values bit for bit (0.0 and -0.0 differ, as they should) and
 // the lines of objects read by different chunks.
-static_assert(sizeof(Sphere) == 11 * sizeof(double) + sizeof(std::int64_t));
-static_assert(sizeof(Triangle) == 3 * 13 * sizeof(double) + sizeof(std::int64_t));
+static_assert(sizeof(Sphere) == 12 * sizeof(double) + sizeof(std::int64_t));
+static_assert(sizeof(Triangle) == 3 * 14 * sizeof(double) + sizeof(std::int64_t));
 static_assert(sizeof(Light) == 6 * sizeof(double) + sizeof(std::int64_t));
 
 struct Outcome {

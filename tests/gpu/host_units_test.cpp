@@ -279,6 +279,18 @@ TEST(KernelVariants, SpecialisedForWhatTheSceneHolds) {
         traceSpecialization(packSceneInFileOrder(sceneWith({matte, shiny}, 1)), settings);
     EXPECT_TRUE(mirror.hasMirrors);
     EXPECT_TRUE(mirror.hasSpecular);
+    EXPECT_FALSE(mirror.hasMirrorShares); // every share 1: kr is ks, no share read
+    // A highlight without a mirror (mir: 0) alone: a highlight, and no reflection loop.
+    Material glossy = shiny;
+    glossy.mirror = 0.0;
+    TraceSpecialization highlight =
+        traceSpecialization(packSceneInFileOrder(sceneWith({matte, glossy}, 1)), settings);
+    EXPECT_TRUE(highlight.hasSpecular);
+    EXPECT_FALSE(highlight.hasMirrors);
+    // Beside a mirror, the share is read.
+    TraceSpecialization both =
+        traceSpecialization(packSceneInFileOrder(sceneWith({glossy, shiny}, 1)), settings);
+    EXPECT_TRUE(both.hasMirrors && both.hasMirrorShares);
     settings.depth = 0; // no bounces: highlights, but no reflection loop
     TraceSpecialization flat =
         traceSpecialization(packSceneInFileOrder(sceneWith({matte, shiny}, 1)), settings);
@@ -296,7 +308,7 @@ TEST(KernelVariants, GeneralKernelIgnoresTheContentButKeepsChoicesAndHierarchy) 
     packed.bvhNodes.resize(1); // as if the scene were large enough for the hierarchy
     TraceSpecialization general = traceSpecialization(packed, settings);
     EXPECT_TRUE(general.hasSpheres && general.hasTriangles && general.hasSpecular &&
-                general.hasMirrors);
+                general.hasMirrors && general.hasMirrorShares);
     EXPECT_TRUE(general.useHierarchy);
     EXPECT_FALSE(general.stableSphereTest);
     EXPECT_TRUE(general.watertightTriangles);

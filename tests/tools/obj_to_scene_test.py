@@ -57,22 +57,24 @@ def convert(obj_text, name, *options, mtl=None):
 
 
 def triangles_of(scene):
-    """[(3 positions, 3 normals, 3 (dif, spe, shi))] from a scene the tool wrote."""
+    """[3 corners {pos, nor, dif, spe, shi, mir}] from a scene the tool wrote: one key and
+    its numbers a line, mir (1 when absent) the only optional key."""
     with open(scene) as handle:
-        tokens = handle.read().split()
-    result, i = [], 0
-    while i < len(tokens):
-        if tokens[i] == "triangle":
-            corners, i = [], i + 1
-            for _ in range(3):
-                f = lambda at, n: tuple(float(t) for t in tokens[at + 1:at + 1 + n])
-                corners.append({"pos": f(i, 3), "nor": f(i + 4, 3), "dif": f(i + 8, 3), "spe": f(i + 12, 3),
-                                "shi": float(tokens[i + 17])})
-                i += 18
-            result.append(corners)
-        else:
-            i += 1
-    return result
+        lines = handle.read().split("\n")
+    result = []
+    for line in lines[2:]:
+        fields = line.split()
+        if not fields or fields[0] == "light":
+            result.append(None) if fields else None
+            continue
+        if fields[0] == "triangle":
+            result.append([])
+        elif result and result[-1] is not None:
+            key, numbers = fields[0][:-1], tuple(float(t) for t in fields[1:])
+            if key == "pos":
+                result[-1].append({"mir": 1.0})
+            result[-1][-1][key] = numbers[0] if len(numbers) == 1 else numbers
+    return [corners for corners in result if corners is not None]
 
 
 def render(scene):
@@ -147,11 +149,42 @@ class ObjToScene(unittest.TestCase):
         self.assertEqual((shiny["dif"], shiny["spe"], shiny["shi"]), ((0.8, 0.1, 1.0), (0.25, 0.25, 0.25), 1000.0))
         self.assertEqual(plain["dif"], (0.2, 0.3, 0.4))
         self.assertEqual(default["dif"], (0.75, 0.75, 0.75))
+        self.assertEqual((default["spe"], default["mir"]), ((0.1, 0.1, 0.1), 0.0))  # no mirror
         render(scene)
 
         run, scene = convert(obj, "no_library")  # mats.mtl is not there
         self.assertEqual(run.returncode, 0, run.stderr)
         self.assertIn("no_library.obj:1: warning: material library", run.stderr)
+
+    def test_illum_says_what_ks_is_and_ns_below_1_is_1(self):
+        materials = ("matte 0", "diffuse 1", "glossy 2", "mirror 3", "glass 7", "unsaid")
+        mtl = "".join("newmtl %s\nKs 0.6\nNs 0\n%s" % (name.split()[0], "illum %s\n" % name.split()[1]
+                                                       if " " in name else "") for name in materials)
+        mtl += "newmtl late\nillum 3\nKs 0.4\nnewmtl odd\nillum 2.5\n"  # Ks after illum; a wrong illum
+        names = [m.split()[0] for m in materials] + ["late", "odd"]
+        obj = "mtllib mats.mtl\nv 0 0 -3\nv 1 0 -3\nv 0 1 -3\n" + "".join(
+            "usemtl %s\nf 1 2 3\n" % name for name in names)
+        run, scene = convert(obj, "illum", mtl=mtl)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertIn("mats.mtl:%d: warning: illum expects an illumination model, a whole number 0 to 10, got 2.5"
+                      % (mtl.count("\n")), run.stderr)
+        got = {name: (t[0]["spe"][0], t[0]["mir"], t[0]["shi"]) for name, t in zip(names, triangles_of(scene))}
+        self.assertEqual(got, {"matte": (0.0, 0.0, 1.0), "diffuse": (0.0, 0.0, 1.0), "glossy": (0.6, 0.0, 1.0),
+                               "mirror": (0.6, 1.0, 1.0), "glass": (0.6, 1.0, 1.0), "unsaid": (0.6, 0.0, 1.0),
+                               "late": (0.4, 1.0, 30.0), "odd": (0.1, 0.0, 30.0)})
+        self.assertIn("shi: 1\nmir: 0\n", read(scene))
+        render(scene)
+
+    def test_up_takes_an_axis_in_either_case_with_an_optional_sign(self):
+        _run, plain = convert(CUBE, "up_z", "--up", "z")
+        for written in ("Z", "+z", "+Z"):
+            run, scene = convert(CUBE, "up_" + written.replace("+", "plus"), "--up", written)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            self.assertEqual(read(scene), read(plain))
+        run, _scene = convert(CUBE, "up_wrong", "--up", "w")
+        self.assertEqual(run.returncode, 2)
+        self.assertIn("expects an axis, x, y or z in either case with an optional sign (z, Z, +z, -y), got 'w'",
+                      run.stderr)
 
     def test_lights_and_ambient(self):
         _run, scene = convert(CUBE, "lights", "--light", "1,2,3", "--light", "-1,5,0", "--ambient", "0.2,0.3,0.4")

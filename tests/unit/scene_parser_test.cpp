@@ -113,6 +113,26 @@ TEST(SceneParser, TriangleKeepsPerVertexMaterials) {
     EXPECT_TRUE(scene.warnings.empty());
 }
 
+// The one optional field: the mirror share after shi:, 1 (the classic model) when absent.
+TEST(SceneParser, TheMirrorShareIsOptionalAndOneWithoutIt) {
+    const Scene plain = parse(header(2) + sphereText + triangleText);
+    EXPECT_EQ(plain.spheres[0].material.mirror, 1.0);
+    for (const Vertex& v : plain.triangles[0].vertices)
+        EXPECT_EQ(v.material.mirror, 1.0);
+    const Scene shared = parse(header(2) + replaced(sphereText, "shi: 1", "shi: 1\nmir: 0") +
+                               replaced(replaced(triangleText, "shi: 40", "shi: 40 MIR: 0.25"),
+                                        "shi: 30", "shi: 30\nmir: 1"));
+    EXPECT_EQ(shared.spheres[0].material.mirror, 0.0);
+    EXPECT_EQ(shared.triangles[0].vertices[0].material.mirror, 1.0);
+    EXPECT_EQ(shared.triangles[0].vertices[1].material.mirror, 0.25);
+    EXPECT_EQ(shared.triangles[0].vertices[2].material.mirror, 1.0);
+    EXPECT_EQ(mirrorWeight(shared.triangles[0].vertices[1].material), glm::dvec3(0.2 * 0.25));
+    EXPECT_EQ(errorOf(header(1) + replaced(sphereText, "shi: 1", "shi: 1 mir: 1.5")),
+              "t.scene:8: error: the sphere's mirror share must be between 0 and 1, found 1.5");
+    EXPECT_EQ(errorOf(header(1) + replaced(sphereText, "shi: 1", "shi: 1 mir: x")),
+              "t.scene:8: error: expected a number for the sphere's mirror share, found 'x'");
+}
+
 TEST(SceneParser, KeepsObjectsInFileOrderPerKind) {
     const Scene scene = parse(header(5) + lightText + sphereText + triangleText +
                               replaced(sphereText, "rad: 1", "rad: 2") +

@@ -80,6 +80,7 @@ inline PeerSurface surfaceAt(const PeerScene& scene, const PeerRay& ray, const P
         s.material.ks = w.x * k[0].material.ks + w.y * k[1].material.ks + w.z * k[2].material.ks;
         s.material.shininess = w.x * k[0].material.shininess + w.y * k[1].material.shininess +
                                w.z * k[2].material.shininess;
+        s.material.kr = w.x * k[0].material.kr + w.y * k[1].material.kr + w.z * k[2].material.kr;
     }
     if (glm::dot(s.normal, ray.direction) > 0.0f) s.normal = -s.normal;
     return s;
@@ -135,7 +136,7 @@ glm::vec3 traceRay(const PeerScene& scene, Worker& worker, PeerRay ray, int dept
         if (hit.kind == HitKind::none) return color + throughput * background;
         const PeerSurface s = surfaceAt(scene, ray, hit);
         const glm::vec3 local = shadePhong(scene, worker, s, -ray.direction, count);
-        const glm::vec3 ks = s.material.ks;
+        const glm::vec3 ks = s.material.kr;
         if (ks == glm::vec3(0.0f) || bounce >= depth) return color + throughput * local;
         color += throughput * (1.0f - ks) * local;
         throughput *= ks;

@@ -9,7 +9,8 @@
 namespace {
 
 PeerMaterial toFloat(const Material& m) {
-    return {glm::vec3(m.diffuse), glm::vec3(m.specular), float(m.shininess)};
+    return {glm::vec3(m.diffuse), glm::vec3(m.specular), float(m.shininess),
+            glm::vec3(mirrorWeight(m))};
 }
 
 // A position's bit pattern as a hash key: equal floats share one vertex (-0 and 0 stay

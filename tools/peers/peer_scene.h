@@ -14,6 +14,7 @@ struct PeerMaterial {
     glm::vec3 kd{0.0f};
     glm::vec3 ks{0.0f};
     float shininess = 0.0f;
+    glm::vec3 kr{0.0f}; // the mirror weight: ks times the mirror share
 };
 
 // One corner of a triangle: what shading interpolates with the barycentrics.
