@@ -27,17 +27,21 @@ struct FrameView {
 std::vector<FrameView> framesOf(const Options& options, const Scene& scene,
                                 const std::vector<PathCamera>& path) {
     std::vector<FrameView> frames;
+    const CameraPose camera = cameraFor(options, scene);
     if (options.turntableFrames > 0) {
-        const glm::dvec3 centre = sceneBounds(scene).centre;
+        const glm::dvec3 centre = turntableCentre(options, scene, camera);
+        const glm::dvec3 axis = turntableAxis(scene, camera);
+        note("Turntable: %u frames about the line through %.9g,%.9g,%.9g along %.9g,%.9g,%.9g\n",
+             options.turntableFrames, centre.x + 0.0, centre.y + 0.0, centre.z + 0.0, axis.x + 0.0,
+             axis.y + 0.0, axis.z + 0.0); // + 0.0: no "-0"
         for (std::uint32_t k = 0; k < options.turntableFrames; ++k)
-            frames.push_back({k,
-                              turntableCamera(options.camera, centre, k, options.turntableFrames),
+            frames.push_back({k, turntableCamera(camera, centre, axis, k, options.turntableFrames),
                               options.fovDegrees});
     } else if (!path.empty()) {
         for (std::size_t k = 0; k < path.size(); ++k)
             frames.push_back({std::uint32_t(k), path[k].pose, path[k].fovDegrees});
     } else {
-        frames.push_back({0, options.camera, options.fovDegrees});
+        frames.push_back({0, camera, options.fovDegrees});
     }
     if (options.frameRangeGiven)
         std::erase_if(frames, [&](const FrameView& frame) {

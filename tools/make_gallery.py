@@ -4,11 +4,11 @@
     python3 tools/make_gallery.py --raytracer build/Raytracer --models out/gallery \\
         --images docs/images
 
-Writes three Wavefront OBJ models with their MTL materials into --models, all made
+Writes five Wavefront OBJ models with their MTL materials into --models, all made
 here from formulas (none copied from elsewhere): a (3,2) torus-knot tube of quads
 (knot.obj), an icosahedron split once into 80 faces (gem.obj, shown with flat
-facets) and a vase turned from a profile, written z-up as CAD and Blender models
-often are (vase.obj). Then renders each with Raytracer, straight from the OBJ file
+facets), a vase turned from a profile, written z-up as CAD and Blender models
+often are (vase.obj), a flat star (star.obj) and a long pencil (pencil.obj). Then renders each with Raytracer, straight from the OBJ file
 (framed, on a floor, lit: docs/models.md), to --images/gallery-NAME.png, and prints
 each command. Deterministic; standard library only.
 """
@@ -25,9 +25,9 @@ FMT = "%.6f"
 def write_model(folder, name, positions, faces, material):
     """NAME.obj (positions, faces of 1-based indices) and NAME.mtl with one material."""
     with open(os.path.join(folder, name + ".mtl"), "w") as out:
-        out.write("newmtl %s\nKd %s\nKs %s\nNs %g\n" % (
+        out.write("newmtl %s\nKd %s\nKs %s\nNs %g\nillum %d\n" % (
             name, " ".join(FMT % c for c in material["Kd"]), " ".join(FMT % c for c in material["Ks"]),
-            material["Ns"]))
+            material["Ns"], material.get("illum", 2)))
     with open(os.path.join(folder, name + ".obj"), "w") as out:
         out.write("# made by tools/make_gallery.py\nmtllib %s.mtl\n" % name)
         for p in positions:
@@ -116,10 +116,40 @@ def vase(rings=48, sides=48):
     return positions, faces
 
 
+def star(points=5, outer=1.0, inner=0.45):
+    """A flat star lying in the y = 0 plane: one concave polygon of 2 * points corners (ear
+    clipped), facing up, as a flat model (a decal, a floor tile) lies."""
+    positions = []
+    for k in range(2 * points):
+        a = math.pi * k / points
+        r = outer if k % 2 == 0 else inner
+        positions.append((r * math.sin(a), 0.0, r * math.cos(a)))
+    return positions, [tuple(reversed(range(2 * points)))]
+
+
+def pencil(sides=6, length=8.0, radius=0.2, tip=0.6):
+    """A hexagonal pencil lying along z, 20 times as long as it is wide, sharpened to a
+    point at +z: a long model, which the fit must frame whole."""
+    positions, faces = [], []
+    for z in (-length / 2, length / 2 - tip):
+        for k in range(sides):
+            a = 2 * math.pi * k / sides
+            positions.append((radius * math.cos(a), radius * math.sin(a), z))
+    positions.append((0.0, 0.0, length / 2))
+    for k in range(sides):
+        n = (k + 1) % sides
+        faces.append((k, n, sides + n, sides + k))
+        faces.append((sides + k, sides + n, 2 * sides))
+    faces.append(tuple(reversed(range(sides))))
+    return positions, faces
+
+
 MODELS = {
     "knot": (knot, {"Kd": (0.8, 0.42, 0.2), "Ks": (0.3, 0.3, 0.3), "Ns": 60}, []),
-    "gem": (gem, {"Kd": (0.15, 0.3, 0.8), "Ks": (0.45, 0.45, 0.45), "Ns": 200}, ["--crease", "10"]),
+    "gem": (gem, {"Kd": (0.15, 0.3, 0.8), "Ks": (0.45, 0.45, 0.45), "Ns": 200, "illum": 3}, ["--crease", "10"]),
     "vase": (vase, {"Kd": (0.9, 0.88, 0.8), "Ks": (0.15, 0.15, 0.15), "Ns": 40}, ["--up", "z"]),
+    "star": (star, {"Kd": (0.95, 0.75, 0.1), "Ks": (0.5, 0.5, 0.5), "Ns": 80}, []),
+    "pencil": (pencil, {"Kd": (0.95, 0.6, 0.1), "Ks": (0.6, 0.6, 0.6), "Ns": 120}, ["--crease", "40"]),
 }
 
 

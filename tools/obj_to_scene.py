@@ -19,9 +19,10 @@ Kd becomes dif, Ks spe and Ns shi; colours are clamped to [0, 1] and Ns to
 without illum is taken as illum 2. Faces without a known material get a light
 grey default with a faint highlight and no mirror.
 
-The scene's camera sits at the origin looking down -z. --fit scales the model
-(uniformly) to 1.5 units across and puts it straight ahead, as far away as
-makes it fill 80% of the view. --ground adds a matte floor under it; --rig
+The scene's camera sits at the origin looking down -z. --fit turns the model to
+show that camera the side --view names (default three-quarter: from the front
+right, above the horizon), scales it (uniformly) to 1.5 units across and puts it
+straight ahead, as far away as makes it fill 80% of the view. --ground adds a matte floor under it; --rig
 places key, fill and rim lights around it for the camera of --camera-pos,
 --camera-target and --camera-up (Raytracer's options, default the origin
 looking down -z); otherwise one white light sits above the camera unless
@@ -468,6 +469,10 @@ def dot(a, b):
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 
 
+def times(v, s):
+    return (v[0] * s, v[1] * s, v[2] * s)
+
+
 def newell_normal(positions, face, scale):
     """Newell's sum of cross products over a polygon: its normal scaled by twice its area,
     so adding such sums weights faces by area; per polygon, so how a quad was split does
@@ -548,31 +553,123 @@ def describe_far(model, far, left_out):
                             extent))
 
 
-class Placement:
-    """p -> (p - centre) * scale + offset: the model scaled to FIT_SIZE across and put
-    straight ahead of the default camera, as far away as makes its outermost position lie
-    FRAME_SHARE of the way from the centre of the view to its edge (without fit, p)."""
+VIEWS = ("three-quarter", "front", "back", "left", "right", "top", "bottom")
+THREE_QUARTER_AZIMUTH = 45.0  # degrees round from the front towards the model's right (+x)
+THREE_QUARTER_ELEVATION = (30.0, 60.0)  # degrees above the horizon, at least and at most
+HORIZON_MARGIN = 5.0  # degrees the horizon stays above the frame's top edge
+FLOOR_GAP = 0.002  # the floor's distance below the model, in model sizes
 
-    def __init__(self, positions, fit, fov, aspect):
-        low = [min(p[i] for p in positions) for i in range(3)]
-        high = [max(p[i] for p in positions) for i in range(3)]
-        self.centre, self.scale, self.offset = (0.0, 0.0, 0.0), 1.0, (0.0, 0.0, 0.0)
+
+def view_turn(view, fov):
+    """The turn that shows the camera a side of the model: its rows (the camera's right, up
+    and backward axes in the model's coordinates), or None for the front view (no turn).
+    Raytracer's viewTurn, operation for operation."""
+    exact = {"back": ((-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, -1.0)),
+             "right": ((0.0, 0.0, -1.0), (0.0, 1.0, 0.0), (1.0, 0.0, 0.0)),
+             "left": ((0.0, 0.0, 1.0), (0.0, 1.0, 0.0), (-1.0, 0.0, 0.0)),
+             "top": ((1.0, 0.0, 0.0), (0.0, 0.0, -1.0), (0.0, 1.0, 0.0)),
+             "bottom": ((1.0, 0.0, 0.0), (0.0, 0.0, 1.0), (0.0, -1.0, 0.0))}
+    if view == "front":
+        return None
+    if view in exact:
+        return exact[view]
+    elevation = min(max(fov / 2.0 + HORIZON_MARGIN, THREE_QUARTER_ELEVATION[0]), THREE_QUARTER_ELEVATION[1])
+    a, e = THREE_QUARTER_AZIMUTH * (math.pi / 180.0), elevation * (math.pi / 180.0)
+    ca, sa, ce, se = math.cos(a), math.sin(a), math.cos(e), math.sin(e)
+    return ((ca, 0.0, -sa), (-sa * se, ce, -ca * se), (sa * ce, se, ca * ce))
+
+
+def apply_turn(turn, v):
+    if turn is None:
+        return v
+    return tuple(r[0] * v[0] + r[1] * v[1] + r[2] * v[2] for r in turn)
+
+
+FRAME_LIMIT = 0.95  # no position nearer the frame's edge than this share of the way to it
+FIT_STEPS = 40
+
+
+def distance_for_share(turned, tan_y, tan_x, share):
+    """The distance at which the outermost turned position lies share of the way from the
+    centre of the view to its edge."""
+    vertical, horizontal = share * tan_y, share * tan_x
+    distance = 0.0
+    for v in turned:
+        distance = max(distance, v[2] + max(abs(v[1]) / vertical, abs(v[0]) / horizontal))
+    return distance
+
+
+def half_span(turned, tan_y, tan_x, distance):
+    """Half the larger of the silhouette's width and height as shares of the frame's."""
+    left = right = bottom = top = 0.0
+    for v in turned:
+        depth = distance - v[2]
+        if not depth > 0.0:
+            return math.inf
+        x, y = v[0] / (depth * tan_x), v[1] / (depth * tan_y)
+        left, right, bottom, top = min(left, x), max(right, x), min(bottom, y), max(top, y)
+    return max(right - left, top - bottom) / 2.0
+
+
+def fit_distance(turned, tan_y, tan_x):
+    """Where the silhouette spans FRAME_SHARE of the frame, by bisection, no nearer than where
+    the outermost position lies FRAME_LIMIT of the way to the edge (Raytracer's fitDistance)."""
+    nearest = distance_for_share(turned, tan_y, tan_x, FRAME_LIMIT)
+    farthest = distance_for_share(turned, tan_y, tan_x, FRAME_SHARE)
+    if half_span(turned, tan_y, tan_x, nearest) <= FRAME_SHARE:
+        return nearest
+    for _ in range(FIT_STEPS):
+        middle = (nearest + farthest) / 2.0
+        if half_span(turned, tan_y, tan_x, middle) > FRAME_SHARE:
+            nearest = middle
+        else:
+            farthest = middle
+    return farthest
+
+
+def lying_down(positions):
+    """The note for a model read as y-up that looks like a z-up one on its back (longest along
+    z, shallowest along y, at most 0.6 of its length; a flat model is left alone), or None."""
+    extent = [max(p[a] for p in positions) - min(p[a] for p in positions) for a in range(3)]
+    if not (extent[1] > 0.0 and extent[2] >= extent[0] and extent[1] <= extent[0] and extent[1] <= 0.6 * extent[2]):
+        return None
+    return ("the model is longest along z and shallowest along y, as a z-up model (Blender, most "
+            "CAD and scanning tools) lies on its back when read as y-up; if it is one, give --up z")
+
+
+class Placement:
+    """p -> turn(p - centre) * scale + offset: the model turned to show the camera the side
+    its view names, scaled to FIT_SIZE across and put straight ahead of the default camera,
+    as far away as makes its outermost position lie FRAME_SHARE of the way from the centre of
+    the view to its edge (without fit, p). low and high: the box around the positions,
+    unplaced."""
+
+    def __init__(self, positions, fit, fov, aspect, view):
+        self.low = tuple(min(p[i] for p in positions) for i in range(3))
+        self.high = tuple(max(p[i] for p in positions) for i in range(3))
+        low, high = self.low, self.high
+        self.centre, self.scale, self.offset, self.turn = (0.0, 0.0, 0.0), 1.0, (0.0, 0.0, 0.0), None
         if fit:
             self.centre = tuple((low[i] + high[i]) / 2.0 for i in range(3))
+            self.turn = view_turn(view, fov)
             size = max(high[i] - low[i] for i in range(3))
             self.scale = FIT_SIZE / size if size > 0.0 else 1.0
-            tangent = math.tan(fov * (math.pi / 180.0) / 2.0)
-            vertical = FRAME_SHARE * tangent
-            horizontal = vertical * aspect
-            distance = 0.0
-            for p in positions:
-                v = tuple((p[i] - self.centre[i]) * self.scale for i in range(3))
-                distance = max(distance, v[2] + max(abs(v[1]) / vertical, abs(v[0]) / horizontal))
-            self.offset = (0.0, 0.0, -distance)
-        self.low, self.high = self.place(low), self.place(high)
+            turned = [times(apply_turn(self.turn, sub(p, self.centre)), self.scale) for p in positions]
+            tan_y = math.tan(fov * (math.pi / 180.0) / 2.0)
+            self.offset = (0.0, 0.0, -fit_distance(turned, tan_y, tan_y * aspect))
 
     def place(self, p):
-        return tuple((p[i] - self.centre[i]) * self.scale + self.offset[i] for i in range(3))
+        return tuple(c * self.scale + self.offset[i] for i, c in enumerate(apply_turn(self.turn, sub(p, self.centre))))
+
+    def anchor(self):
+        """(centre, radius) of the light rig: the box's centre placed, half its diagonal scaled."""
+        centre = tuple((self.low[i] + self.high[i]) / 2.0 for i in range(3))
+        return self.place(centre), length(times(sub(self.high, self.low), self.scale)) / 2.0
+
+    def camera(self):
+        """(eye, target, up) of the camera a fitted model is seen from when none is given."""
+        up = apply_turn(self.turn, (0.0, 1.0, 0.0))
+        return (0.0, 0.0, 0.0), self.anchor()[0], up if (up[0] != 0.0 or up[1] != 0.0) else (0.0, 1.0, 0.0)
 
 
 def light_rig(placement, eye, target, up_hint):
@@ -580,11 +677,15 @@ def light_rig(placement, eye, target, up_hint):
     at distances in units of the model's radius from its centre along the camera's right,
     up and backward axes as seen from the camera (eye, target, up_hint) looking at the
     centre: back from the centre to the eye, right perpendicular to back and up_hint."""
-    centre = tuple((placement.low[i] + placement.high[i]) / 2.0 for i in range(3))
-    radius = length(sub(placement.high, placement.low)) / 2.0
+    centre, radius = placement.anchor()
     back = normalize(sub(eye, centre))
     if back == (0.0, 0.0, 0.0):  # the eye at the centre: the camera's own backward axis
         back = normalize(sub(eye, target))
+    # level with the camera's up: the rig keeps its height above the model
+    up_axis = normalize(up_hint)
+    level = normalize(sub(back, times(up_axis, dot(back, up_axis))))
+    if level != (0.0, 0.0, 0.0):
+        back = level
     right = normalize(cross(up_hint, back))
     if right == (0.0, 0.0, 0.0):  # seen along up: the camera's own right
         right = normalize(cross(sub(target, eye), up_hint))
@@ -597,15 +698,17 @@ def light_rig(placement, eye, target, up_hint):
 
 
 def ground(placement):
-    """A floor under the model: a square GROUND_SPAN model sizes across, centred below
-    it, at the height of its lowest position, matte grey, facing up."""
+    """A floor under the model: a square GROUND_SPAN model sizes across, centred below it,
+    FLOOR_GAP model sizes below its lowest position, matte grey, facing the model's up;
+    placed with the model. Its two triangles, and its normal."""
     low, high = placement.low, placement.high
     centre = tuple((low[i] + high[i]) / 2.0 for i in range(3))
-    half = GROUND_SPAN * max(high[i] - low[i] for i in range(3)) / 2.0
-    y = low[1]
-    corners = [(centre[0] - half, y, centre[2] - half), (centre[0] + half, y, centre[2] - half),
-               (centre[0] + half, y, centre[2] + half), (centre[0] - half, y, centre[2] + half)]
-    return [[corners[k] for k in triangle] for triangle in ((0, 3, 2), (0, 2, 1))]
+    size = max(high[i] - low[i] for i in range(3))
+    half = GROUND_SPAN * size / 2.0
+    y = low[1] - FLOOR_GAP * size
+    corners = [placement.place(c) for c in ((centre[0] - half, y, centre[2] - half), (centre[0] + half, y, centre[2] - half),
+                                            (centre[0] + half, y, centre[2] + half), (centre[0] - half, y, centre[2] + half))]
+    return [[corners[k] for k in triangle] for triangle in ((0, 3, 2), (0, 2, 1))], apply_turn(placement.turn, (0.0, 1.0, 0.0))
 
 
 # ------------------------------------------------------------------ writing ---
@@ -627,11 +730,14 @@ def write_scene(out, model, settings, warn):
     normals = [turn_up(n, settings.up) for n in model.normals]
     # The fit, the floor and the rig are for the model without positions far beyond it.
     far = far_positions(model.positions)
-    placement = Placement([p for p, f in zip(positions, far) if not f], settings.fit, settings.fov, settings.aspect)
+    placement = Placement([p for p, f in zip(positions, far) if not f], settings.fit, settings.fov, settings.aspect,
+                          settings.view)
     far_faces = [any(far[p] for p in face) for face in model.faces]  # the faces that use one, left out
     smooth = SmoothNormals(model, positions, settings.crease, far_faces)
-    lights = (light_rig(placement, settings.camera_pos, settings.camera_target, settings.camera_up)
-              if settings.rig else settings.lights)
+    # The rig's camera: the one given, else a fitted model's own (Raytracer's modelCamera).
+    camera = ((settings.camera_pos, settings.camera_target, settings.camera_up)
+              if settings.camera_given or not settings.fit else placement.camera())
+    lights = light_rig(placement, *camera) if settings.rig else settings.lights
 
     triangles, far_triangles = [], 0
     for corners, material, _line, face in model.triangles:
@@ -643,9 +749,14 @@ def write_scene(out, model, settings, warn):
                                                              sub(corner_positions[2], corner_positions[0]))) == 0.0:
             model.skipped += 1
             continue
-        triangles.append([(placement.place(positions[p]), normals[n] if n is not None else smooth.at(face, p),
+        triangles.append([(placement.place(positions[p]),
+                           apply_turn(placement.turn, normals[n] if n is not None else smooth.at(face, p)),
                            model.colors[p] if model.colors[p] is not None else material["dif"], material)
                           for p, n in corners])
+    if not settings.up_given:
+        lying = lying_down([p for p, f in zip(model.positions, far) if not f])
+        if lying:
+            warn("%s: warning: %s" % (settings.obj, lying))
     if True in far:
         line, message = describe_far(model, far, far_triangles)
         if not triangles:
@@ -656,8 +767,9 @@ def write_scene(out, model, settings, warn):
                               "corners at one position, or no area): nothing is left to render"
                               % len(model.triangles))
     if settings.ground:
-        triangles += [[(corner, (0.0, 1.0, 0.0), GROUND_MATERIAL["dif"], GROUND_MATERIAL) for corner in triangle]
-                      for triangle in ground(placement)]
+        floor, normal = ground(placement)
+        triangles += [[(corner, normal, GROUND_MATERIAL["dif"], GROUND_MATERIAL) for corner in triangle]
+                      for triangle in floor]
 
     out.write("%d\n" % (len(lights) + len(triangles)))
     out.write("amb: %s\n" % vec(settings.ambient))
@@ -719,7 +831,10 @@ def main(argv=None):
     parser.add_argument("--fit", action="store_true",
                         help="scale the model to %g units across and put it straight ahead of the camera, "
                              "filling %d%%%% of the view (of --fov, --width and --height)" % (FIT_SIZE, FRAME_SHARE * 100))
-    parser.add_argument("--up", type=up_axis, default="y", metavar="AXIS",
+    parser.add_argument("--view", choices=VIEWS,
+                        help="with --fit, the side the model is seen from (default three-quarter: front "
+                             "right, from above)")
+    parser.add_argument("--up", type=up_axis, metavar="AXIS",
                         help="the model's axis that is up, turned onto +y: x, y or z in either case with an "
                              "optional sign (z, Z, +z, -y; default y)")
     parser.add_argument("--crease", type=crease_angle, default=60.0, metavar="DEG",
@@ -728,11 +843,12 @@ def main(argv=None):
     parser.add_argument("--ground", action="store_true", help="a matte floor under the model, for its shadow")
     parser.add_argument("--rig", action="store_true",
                         help="key, fill and rim lights around the model instead of --light's")
-    parser.add_argument("--camera-pos", type=triple, default=(0.0, 0.0, 0.0), metavar="X,Y,Z",
-                        help="the camera --rig is placed for, as Raytracer's option (default 0,0,0)")
+    parser.add_argument("--camera-pos", type=triple, metavar="X,Y,Z",
+                        help="the camera --rig is placed for, as Raytracer's option (default: with --fit, the "
+                             "model's own camera, at 0,0,0 looking at its centre; else 0,0,0)")
     parser.add_argument("--camera-target", type=triple, metavar="X,Y,Z",
                         help="the point it looks at (default 0,0,-1 from the eye)")
-    parser.add_argument("--camera-up", type=triple, default=(0.0, 1.0, 0.0), metavar="X,Y,Z",
+    parser.add_argument("--camera-up", type=triple, metavar="X,Y,Z",
                         help="its up direction (default 0,1,0)")
     parser.add_argument("--fov", type=float, default=60.0, help="the view --fit fills: vertical degrees (default 60)")
     parser.add_argument("--width", type=int, default=640, help="the view --fit fills: width (default 640)")
@@ -746,6 +862,10 @@ def main(argv=None):
         glued.append(arg + "=" + argv.pop(0) if arg in ("--light", "--light-color", "--light-colour", "--ambient", "--up",
                                                    "--camera-pos", "--camera-target", "--camera-up") and argv else arg)
     args = parser.parse_args(glued)
+    args.up_given, args.up = args.up is not None, args.up or "y"
+    if args.view and not args.fit:
+        parser.error("--view turns a model fitted with --fit")
+    args.view = args.view or "three-quarter"
     if args.rig and args.light:
         parser.error("--rig places its own lights: give --rig or --light, not both")
     if not (0.0 < args.fov < 180.0) or args.width < 1 or args.height < 1:
@@ -757,7 +877,12 @@ def main(argv=None):
         model = read_obj(args.obj, warn)
         args.lights = [(p, args.light_color) for p in (args.light or [(0.0, 4.0, 0.0)])]
         args.aspect = args.width / args.height
-        if args.camera_target is None:  # as Raytracer: straight down -z from the eye
+        # As Raytracer: a camera option given places the rig for that camera (the target
+        # straight down -z from the eye unless given); none places it for the model's own.
+        args.camera_given = not (args.camera_pos is None and args.camera_target is None and args.camera_up is None)
+        args.camera_pos = args.camera_pos or (0.0, 0.0, 0.0)
+        args.camera_up = args.camera_up or (0.0, 1.0, 0.0)
+        if args.camera_target is None:
             args.camera_target = add(args.camera_pos, (0.0, 0.0, -1.0))
         if args.out:
             temporary = args.out + ".tmp"

@@ -67,7 +67,10 @@ std::string commandLine(const Options& options) {
     // Without a target parseOptions looks down -z from the position, so the target is
     // written only when it was given; with it, the whole pose.
     const CameraPose &camera = options.camera, plainCamera;
-    if (options.cameraTargetGiven || camera.position != plainCamera.position)
+    // A camera given as the default one still stands for the command line's camera (not a
+    // fitted model's), so it is said.
+    const bool plainGiven = options.cameraGiven && camera == plainCamera;
+    if (options.cameraTargetGiven || camera.position != plainCamera.position || plainGiven)
         add("--camera-pos", triple(camera.position));
     if (options.cameraTargetGiven) add("--camera-target", triple(camera.target));
     if (options.cameraTargetGiven || camera.up != plainCamera.up)
@@ -84,10 +87,13 @@ std::string commandLine(const Options& options) {
     addChoice("--triangle-test", triangleTestNames(), kernel.triangleTest, plain.triangleTest);
     addChoice("--offset", rayOffsetNames(), kernel.offset, plain.offset);
     addPath("--shader-dir", options.shaderDirectory);
-    addChoice("--up", upAxisNames(), options.modelUp, defaults.modelUp);
+    if (options.upGiven || options.modelUp != defaults.modelUp)
+        add("--up", choiceName(upAxisNames(), options.modelUp));
     if (options.creaseDegrees != defaults.creaseDegrees)
         add("--crease", exact(options.creaseDegrees));
     addSwitch("--no-ground", !options.ground);
+    addChoice("--view", modelViewNames(), options.modelView, defaults.modelView);
+    addSwitch("--no-fit", !options.fit);
 
     // Then how the program runs, which leaves the image as it is.
     addChoice("--accel", accelerationNames(), options.acceleration, defaults.acceleration);
@@ -105,6 +111,7 @@ std::string commandLine(const Options& options) {
     if (options.pixelGiven)
         add("--pixel", std::to_string(options.pixel.x) + "," + std::to_string(options.pixel.y));
     addCount("--turntable", options.turntableFrames, 0);
+    if (options.orbitCenter) add("--orbit-center", triple(*options.orbitCenter));
     addPath("--camera-path", options.cameraPath);
     if (options.frameRangeGiven)
         add("--frames",
@@ -140,12 +147,15 @@ std::string headlessCommand(const Options& options, const CameraPose& camera, in
     view.depth = options.depth;
     view.fovDegrees = options.fovDegrees;
     view.camera = camera;
-    view.cameraTargetGiven = true; // the window's pose is a whole one
+    view.cameraTargetGiven = view.cameraGiven = true; // the window's pose is a whole one
     view.background = options.background;
     view.kernel = options.kernel;
     view.shaderDirectory = options.shaderDirectory;
     view.modelUp = options.modelUp; // an OBJ model is built by these
+    view.upGiven = options.upGiven;
     view.creaseDegrees = options.creaseDegrees;
     view.ground = options.ground;
+    view.modelView = options.modelView;
+    view.fit = options.fit;
     return commandLine(view);
 }

@@ -46,6 +46,8 @@ void checkBatch(Options& options) {
                              "was given");
         return;
     }
+    if (options.orbitCenter && options.turntableFrames == 0)
+        throw UsageError("--orbit-center sets the point --turntable orbits; give --turntable N");
     if (options.turntableFrames > 0 && !options.cameraPath.empty())
         throw UsageError("--turntable and --camera-path both give the frames' cameras; give one");
     if (options.benchFrames > 0 || options.benchWindowFrames > 0 || options.pixelGiven ||
@@ -120,6 +122,10 @@ void checkOptionCombinations(Options& options, const OptionsGiven& given) {
         !options.listDevices && options.dumpShadersTo.empty())
         throw UsageError("no scene file given");
     checkModelOptions(options, given.modelOnly);
+    if (given.view && !options.fit)
+        throw UsageError("--view turns a model fitted to the view, and --no-fit leaves it where "
+                         "its file puts it; place the camera with --camera-pos and "
+                         "--camera-target instead");
     if (options.forceWindow && (!options.outputPath.empty() || options.benchFrames > 0))
         throw UsageError("--window cannot be combined with -o or --bench, which render headless");
     if (options.pixelGiven &&

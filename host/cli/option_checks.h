@@ -11,7 +11,8 @@
 // What the command line said beyond the values in Options.
 struct OptionsGiven {
     bool jpegQuality = false;           // --quality (any value names a JPEG output)
-    std::vector<std::string> modelOnly; // --up, --crease, --no-ground, in the order given
+    std::vector<std::string> modelOnly; // --up, --crease, --no-ground, ..., in the order given
+    bool view = false;                  // --view
 };
 
 void checkOptionCombinations(Options& options, const OptionsGiven& given);

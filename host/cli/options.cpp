@@ -52,6 +52,17 @@ const ChoiceNames<UpAxis>& upAxisNames() {
     return names;
 }
 
+const ChoiceNames<ModelView>& modelViewNames() {
+    static const ChoiceNames<ModelView> names = {{"three-quarter", ModelView::ThreeQuarter},
+                                                 {"front", ModelView::Front},
+                                                 {"back", ModelView::Back},
+                                                 {"left", ModelView::Left},
+                                                 {"right", ModelView::Right},
+                                                 {"top", ModelView::Top},
+                                                 {"bottom", ModelView::Bottom}};
+    return names;
+}
+
 UpAxis parseUpAxis(const std::string& flag, const std::string& text) {
     std::string_view axis = text;
     const bool negative = !axis.empty() && axis[0] == '-';
@@ -71,11 +82,15 @@ UpAxis parseUpAxis(const std::string& flag, const std::string& text) {
 ObjSceneSetup objSceneSetup(const Options& options) {
     ObjSceneSetup setup;
     setup.up = options.modelUp;
+    setup.upGiven = options.upGiven;
     setup.creaseDegrees = options.creaseDegrees;
     setup.ground = options.ground;
+    setup.view = options.modelView;
+    setup.fit = options.fit;
     setup.fovDegrees = options.fovDegrees;
     setup.aspect = double(options.width) / double(options.height);
     setup.camera = options.camera; // a batch's frames place the rig again for their cameras
+    setup.cameraGiven = options.cameraGiven;
     return setup;
 }
 
@@ -129,8 +144,11 @@ std::string usageText() {
            "                        traced it, as JSON on stdout; headless; alone without -o\n"
            "  --crop X,Y,W,H        render only that region of the full image: W x H pixels, each\n"
            "                        as the full render has it (tools/stitch joins regions)\n"
-           "  --turntable N         N frames orbiting the scene's centre about the camera's up\n"
-           "                        axis at its distance and height; frame 0 is the camera\n"
+           "  --turntable N         N frames orbiting about the camera's up axis at its distance\n"
+           "                        and height, round the camera's target if given, a model's\n"
+           "                        centre, else the centre of what the camera sees; frame 0 is\n"
+           "                        the camera\n"
+           "  --orbit-center X,Y,Z  the point --turntable orbits instead\n"
            "  --camera-path FILE    a frame per line of FILE: POSITION TARGET UP FOV, as in\n"
            "                        0,0,0 0,0,-1 0,1,0 60 (# comments and blank lines allowed)\n"
            "  --frames FIRST-LAST   only those frames of --turntable or --camera-path (or one: K)\n"
@@ -169,6 +187,10 @@ std::string usageText() {
            "                        around them within DEG degrees of their own (0: flat, 180:\n"
            "                        smooth everywhere; default 60)\n"
            "  --no-ground           no floor under an OBJ model\n"
+           "  --view NAME           the side a fitted OBJ model is seen from: three-quarter\n"
+           "                        (default: front right, from above), front, back, left,\n"
+           "                        right, top, bottom\n"
+           "  --no-fit              an OBJ model stays where its file puts it, in its units\n"
            "  --save-scene FILE     write the scene as read (an OBJ model as built: fitted,\n"
            "                        lit, with its normals) in the scene format; alone, nothing\n"
            "                        else is done\n"
@@ -225,6 +247,7 @@ Options parseOptions(int argc, const char* const* argv) {
             if (options.saveScenePath.empty()) throw UsageError(arg + " expects a file name");
         } else if (arg == "--up") {
             options.modelUp = parseUpAxis(arg, value());
+            options.upGiven = true;
             noteModelOnly(given, arg);
         } else if (arg == "--crease") {
             noteModelOnly(given, arg);
@@ -234,6 +257,13 @@ Options parseOptions(int argc, const char* const* argv) {
                 throw UsageError("--crease expects degrees from 0 to 180, got '" + degrees + "'");
         } else if (arg == "--no-ground") {
             options.ground = false;
+            noteModelOnly(given, arg);
+        } else if (arg == "--view") {
+            options.modelView = parseChoice(arg, value(), modelViewNames());
+            given.view = true;
+            noteModelOnly(given, arg);
+        } else if (arg == "--no-fit") {
+            options.fit = false;
             noteModelOnly(given, arg);
         } else if (arg == "--width") {
             options.width = parseCount(arg, value(), 1, 16384);
@@ -252,11 +282,15 @@ Options parseOptions(int argc, const char* const* argv) {
                 throw UsageError("--fov expects degrees strictly between 0 and 180");
         } else if (arg == "--camera-pos") {
             options.camera.position = parseVector(arg, value());
+            options.cameraGiven = true;
         } else if (arg == "--camera-target") {
             options.camera.target = parseVector(arg, value());
-            options.cameraTargetGiven = true;
+            options.cameraTargetGiven = options.cameraGiven = true;
+        } else if (arg == "--orbit-center" || arg == "--orbit-centre") {
+            options.orbitCenter = parseVector(arg, value());
         } else if (arg == "--camera-up") {
             options.camera.up = parseVector(arg, value());
+            options.cameraGiven = true;
         } else if (arg == "--shader-dir") {
             options.shaderDirectory = value();
             std::error_code error;

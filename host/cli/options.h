@@ -39,10 +39,14 @@ struct Options {
     bool quiet = false;       // --quiet: no progress, notes or warnings on stderr; errors only
     // --save-scene FILE: the scene as read (an OBJ model's as built)
     std::filesystem::path saveScenePath;
-    // What an OBJ model is given (docs/models.md): --up AXIS, --crease DEG, --no-ground.
+    // What an OBJ model is given (docs/models.md): --up AXIS, --crease DEG, --no-ground,
+    // --view NAME, --no-fit.
     UpAxis modelUp = UpAxis::PosY;
+    bool upGiven = false; // --up was given, even as y: no note that the model may lie on its back
     double creaseDegrees = 60.0;
     bool ground = true;
+    ModelView modelView = ModelView::ThreeQuarter;
+    bool fit = true;
     bool checkOnly = false; // --check: parse and validate the scene, print what it holds; no Vulkan
     bool useCache = true;   // --no-cache: no shader or pipeline cache on disk
     std::uint32_t regionSide =
@@ -55,6 +59,7 @@ struct Options {
     CameraPose
         camera; // --camera-pos, --camera-target, --camera-up (default: the camera of docs/model.md)
     bool cameraTargetGiven = false; // else the window may move the orbit pivot along the view
+    bool cameraGiven = false;       // any of the three: else a fitted model's camera (cameraFor)
     std::filesystem::path shaderDirectory; // --shader-dir: compile (and watch) these sources
     std::filesystem::path dumpShadersTo;   // --dump-shaders DIR: write the embedded sources, exit
     std::uint32_t benchWindowFrames = 0;   // --bench-window N: time N progressive frames, exit
@@ -77,10 +82,11 @@ struct Options {
     // Batches (docs/batches.md): the scenes after the first, rendered in the same process
     // with one device and one set of compiled kernels; -o then holds {name} or is a folder.
     std::vector<std::filesystem::path> moreScenes;
-    std::uint32_t turntableFrames = 0; // --turntable N: N frames orbiting the scene's centre
-    std::filesystem::path cameraPath;  // --camera-path FILE: one frame per camera of FILE
-    bool frameRangeGiven = false;      // --frames FIRST-LAST: only those frames (a farm's share)
-    glm::uvec2 frameRange{0};          // first and last frame, inclusive
+    std::uint32_t turntableFrames = 0;     // --turntable N: N frames orbiting turntableCentre
+    std::optional<glm::dvec3> orbitCenter; // --orbit-center X,Y,Z: what --turntable orbits
+    std::filesystem::path cameraPath;      // --camera-path FILE: one frame per camera of FILE
+    bool frameRangeGiven = false; // --frames FIRST-LAST: only those frames (a farm's share)
+    glm::uvec2 frameRange{0};     // first and last frame, inclusive
     // --crop X,Y,W,H: only that region of the full image, pixel for pixel as the full image has
     // it; the output is W x H.
     bool cropGiven = false;
@@ -93,6 +99,8 @@ struct Options {
 const ChoiceNames<Acceleration>& accelerationNames();
 // --up's names as printed: y, -y, z, -z, x, -x.
 const ChoiceNames<UpAxis>& upAxisNames();
+// --view's names: three-quarter, front, back, left, right, top, bottom.
+const ChoiceNames<ModelView>& modelViewNames();
 // --up's value as users write it: an axis letter in either case, with an optional sign
 // (z, Z, +z, -y).
 UpAxis parseUpAxis(const std::string& flag, const std::string& text);

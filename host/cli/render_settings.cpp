@@ -29,3 +29,22 @@ void openHeadlessDevice(Context& context, const Options& options) {
                  options.kernel.precision == Precision::Fp64);
     checkImageFits(imageLimitsOf(context), options.width, options.height, true);
 }
+
+CameraPose cameraFor(const Options& options, const Scene& scene) {
+    if (options.cameraGiven || !scene.model || !scene.model->fitted) return options.camera;
+    return {glm::dvec3(0.0), scene.model->centre, scene.model->up};
+}
+
+glm::dvec3 turntableCentre(const Options& options, const Scene& scene, const CameraPose& camera) {
+    if (options.orbitCenter) return *options.orbitCenter;
+    const bool modelCamera = !options.cameraGiven && scene.model && scene.model->fitted;
+    if (options.cameraTargetGiven || modelCamera) return camera.target;
+    return subjectBounds(scene, camera, options.fovDegrees,
+                         double(options.width) / double(options.height))
+        .centre;
+}
+
+glm::dvec3 turntableAxis(const Scene& scene, const CameraPose& camera) {
+    if (scene.model) return glm::normalize(camera.up);
+    return floorAxis(scene, camera.up);
+}

@@ -11,6 +11,20 @@
 // included (none with --no-cache). Not progressive: one frame of samplesPerPixel.
 RenderSettings renderSettingsFrom(const Options& options);
 
+// The camera a scene is seen from: the command line's, or, when it gives none, a model's
+// fitted to the view (the eye at the origin, looking at the model's centre, with the model's
+// up as placed: the same image as the default camera's, and turntables and the window's
+// orbit turn about the model's up).
+CameraPose cameraFor(const Options& options, const Scene& scene);
+
+// The point --turntable orbits: --orbit-center; else the camera's target where one is given
+// (or where cameraFor looks at a fitted model's centre); else the centre of what the camera
+// sees (subjectBounds: a floor that reaches far beyond the frame does not move it).
+glm::dvec3 turntableCentre(const Options& options, const Scene& scene, const CameraPose& camera);
+// The axis it orbits about: a model's up (the camera's, for its own camera), else the
+// scene's floor's normal (floorAxis), else the camera's up.
+glm::dvec3 turntableAxis(const Scene& scene, const CameraPose& camera);
+
 // The device of a headless render (one image or a batch): an instance, with the validation
 // layer for --validate, the device --device names (with fp64 when --precision fp64 asks
 // for it), and the image size checked against what it can hold.

@@ -1,5 +1,7 @@
 #include "scene/camera.h"
 
+#include "scene/scene_triangles.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -125,6 +127,56 @@ SceneBounds sceneBounds(const Scene& scene) {
     return {(low + high) * 0.5, glm::length(high - low) * 0.5};
 }
 
+namespace {
+
+// A box grown point by point; empty until the first.
+struct Box {
+    glm::dvec3 low{std::numeric_limits<double>::infinity()}, high{-low};
+    void add(glm::dvec3 a, glm::dvec3 b) {
+        low = glm::min(low, a);
+        high = glm::max(high, b);
+    }
+    bool empty() const { return !(low.x <= high.x); }
+};
+
+} // namespace
+
+SceneBounds subjectBounds(const Scene& scene, const CameraPose& camera, double fovDegrees,
+                          double aspect) {
+    if (scene.model)
+        return {(scene.model->placedLow + scene.model->placedHigh) * 0.5,
+                glm::length(scene.model->placedHigh - scene.model->placedLow) * 0.5};
+    const SceneBounds whole = sceneBounds(scene);
+    const double large = kSubjectShare * 2.0 * whole.radius;
+    const CameraBasis basis = cameraBasis(camera);
+    const double tanY = std::tan(fovDegrees * (M_PI / 180.0) / 2.0), tanX = tanY * aspect;
+    auto inView = [&](glm::dvec3 p) {
+        const glm::dvec3 d = p - camera.position;
+        const double z = glm::dot(d, basis.forward);
+        return z > 0.0 && std::abs(glm::dot(d, basis.right)) <= z * tanX &&
+               std::abs(glm::dot(d, basis.up)) <= z * tanY;
+    };
+    // Small primitives in view; failing those, small ones anywhere; failing those, all.
+    Box seen, small;
+    for (const Sphere& sphere : scene.spheres) {
+        if (2.0 * sphere.radius > large) continue;
+        const glm::dvec3 r(sphere.radius);
+        small.add(sphere.center - r, sphere.center + r);
+        if (inView(sphere.center)) seen.add(sphere.center - r, sphere.center + r);
+    }
+    forEachTriangle(scene, [&](const Triangle& triangle) {
+        const glm::dvec3 a = triangle.vertices[0].position, b = triangle.vertices[1].position,
+                         c = triangle.vertices[2].position;
+        if (std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)}) > large) return;
+        const glm::dvec3 low = glm::min(a, glm::min(b, c)), high = glm::max(a, glm::max(b, c));
+        small.add(low, high);
+        if (inView(a) || inView(b) || inView(c)) seen.add(low, high);
+    });
+    const Box& box = !seen.empty() ? seen : small;
+    if (box.empty()) return whole;
+    return {(box.low + box.high) * 0.5, glm::length(box.high - box.low) * 0.5};
+}
+
 CameraPose pivotAtScene(const CameraPose& pose, const SceneBounds& bounds, double minimumDistance) {
     const glm::dvec3 forward = cameraBasis(pose).forward;
     const double depth =
@@ -136,11 +188,36 @@ CameraPose pivotAtScene(const CameraPose& pose, const SceneBounds& bounds, doubl
 
 CameraPose turntableCamera(const CameraPose& pose, glm::dvec3 centre, std::uint32_t frame,
                            std::uint32_t frames) {
+    return turntableCamera(pose, centre, glm::normalize(pose.up), frame, frames);
+}
+
+CameraPose turntableCamera(const CameraPose& pose, glm::dvec3 centre, glm::dvec3 axis,
+                           std::uint32_t frame, std::uint32_t frames) {
     if (frame == 0 || frames == 0) return pose;
     const double angle = 2.0 * M_PI * double(frame) / double(frames);
-    const glm::dvec3 axis = glm::normalize(pose.up);
     CameraPose turned = pose;
     turned.position = centre + rotateAround(pose.position - centre, axis, angle);
     turned.target = centre + rotateAround(pose.target - centre, axis, angle);
+    if (glm::normalize(pose.up) != axis) turned.up = rotateAround(pose.up, axis, angle);
     return turned;
+}
+
+glm::dvec3 floorAxis(const Scene& scene, glm::dvec3 up) {
+    up = glm::normalize(up);
+    const double large = kSubjectShare * 2.0 * sceneBounds(scene).radius;
+    double largest = 0.0;
+    glm::dvec3 axis = up;
+    forEachTriangle(scene, [&](const Triangle& triangle) {
+        const glm::dvec3 a = triangle.vertices[0].position, b = triangle.vertices[1].position,
+                         c = triangle.vertices[2].position;
+        if (std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)}) <= large) return;
+        const glm::dvec3 normal = glm::cross(b - a, c - a);
+        const double area = glm::length(normal);
+        if (!(area > largest)) return;
+        const double along = glm::dot(normal, up) / area;
+        if (std::abs(along) < std::sqrt(0.5)) return; // a wall or a backdrop
+        largest = area;
+        axis = (along > 0.0 ? normal : -normal) / area;
+    });
+    return axis;
 }

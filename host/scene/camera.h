@@ -59,6 +59,16 @@ struct SceneBounds {
 };
 SceneBounds sceneBounds(const Scene& scene);
 
+// A sphere around what the camera is there to see, for the turntable's centre, the window's
+// pivot and its fly speed: a model's own box (its floor left out); else the box of the
+// primitives no larger than kSubjectShare of the scene's extent (a sphere's diameter, a
+// triangle's longest edge: floors, walls and backdrops are left out) that have a corner or
+// centre inside the camera's view (fovDegrees vertical, aspect width over height); failing
+// those, of the small ones anywhere; failing those, the whole scene.
+inline constexpr double kSubjectShare = 0.25;
+SceneBounds subjectBounds(const Scene& scene, const CameraPose& camera, double fovDegrees,
+                          double aspect);
+
 // The same view, with the target moved along the line of sight to the depth of the
 // scene's centre (at least minimumDistance ahead), so that orbiting turns around the scene.
 CameraPose pivotAtScene(const CameraPose& pose, const SceneBounds& bounds, double minimumDistance);
@@ -69,3 +79,13 @@ CameraPose pivotAtScene(const CameraPose& pose, const SceneBounds& bounds, doubl
 // pose itself, bit for bit.
 CameraPose turntableCamera(const CameraPose& pose, glm::dvec3 centre, std::uint32_t frame,
                            std::uint32_t frames);
+// The same about another axis (unit length): eye, target and up turned about the line
+// through centre along axis.
+CameraPose turntableCamera(const CameraPose& pose, glm::dvec3 centre, glm::dvec3 axis,
+                           std::uint32_t frame, std::uint32_t frames);
+
+// The axis a turntable turns the scene about: the normal of its floor, turned to up's side,
+// where it has one (the largest triangle longer than kSubjectShare of the scene's extent,
+// within 45 degrees of up: a ramp such as SIGGRAPH's or table's turns on itself, and the
+// camera never passes below it), else up, normalised.
+glm::dvec3 floorAxis(const Scene& scene, glm::dvec3 up);

@@ -9,8 +9,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <span>
+#include <tuple>
+#include <utility>
 
 namespace {
 
@@ -196,13 +199,67 @@ FarPositions describeFar(const ObjModel& model, const std::vector<bool>& far,
                 extent};
 }
 
-// Where the model goes: p -> (p - centre) * scale + offset.
+// Where the model goes: p -> turn(p - centre) * scale + offset, the turn being its view's.
 struct Placement {
     glm::dvec3 centre{0.0};
     double scale = 1.0;
     glm::dvec3 offset{0.0};
-    glm::dvec3 low{0.0}, high{0.0}; // the box around the positions, placed
+    ViewTurn turn;
+    glm::dvec3 low{0.0}, high{0.0}; // the box around the positions, unplaced (y up)
+
+    glm::dvec3 place(glm::dvec3 p) const { return turn.apply(p - centre) * scale + offset; }
 };
+
+// The distance straight ahead of the default camera at which the outermost of the turned
+// positions lies `share` of the way from the centre of the view to its edge:
+// y / (distance - z) = share * tanY, and x the same with tanX.
+double distanceForShare(const std::vector<glm::dvec3>& turned, double tanY, double tanX,
+                        double share) {
+    const double vertical = share * tanY, horizontal = share * tanX;
+    double distance = 0.0;
+    for (const glm::dvec3& v : turned)
+        distance = std::max(distance,
+                            v.z + std::max(std::abs(v.y) / vertical, std::abs(v.x) / horizontal));
+    return distance;
+}
+
+// Half the larger of the silhouette's width and height as shares of the frame's, the model's
+// centre at distance straight ahead; infinite when a position is not in front of the eye.
+double halfSpan(const std::vector<glm::dvec3>& turned, double tanY, double tanX, double distance) {
+    double left = 0.0, right = 0.0, bottom = 0.0, top = 0.0;
+    for (const glm::dvec3& v : turned) {
+        const double depth = distance - v.z;
+        if (!(depth > 0.0)) return std::numeric_limits<double>::infinity();
+        const double x = v.x / (depth * tanX), y = v.y / (depth * tanY);
+        left = std::min(left, x);
+        right = std::max(right, x);
+        bottom = std::min(bottom, y);
+        top = std::max(top, y);
+    }
+    return std::max(right - left, top - bottom) / 2.0;
+}
+
+// How far straight ahead the fitted model goes: where its silhouette spans kFrameShare of
+// the frame's width or height (the larger share), found by bisection, but no nearer than
+// where its outermost position lies kFrameLimit of the way to the frame's edge. A model
+// seen face on is symmetric, so its outermost positions decide (80% of the frame); one seen
+// along its length has a near end larger than its far end, and comes nearer, up to the
+// limit, until the span is 80%.
+constexpr double kFrameLimit = 0.95;
+constexpr int kFitSteps = 40;
+double fitDistance(const std::vector<glm::dvec3>& turned, double tanY, double tanX) {
+    double nearest = distanceForShare(turned, tanY, tanX, kFrameLimit);
+    double farthest = distanceForShare(turned, tanY, tanX, kFrameShare); // spans <= the share
+    if (halfSpan(turned, tanY, tanX, nearest) <= kFrameShare) return nearest;
+    for (int step = 0; step < kFitSteps; ++step) {
+        const double middle = (nearest + farthest) / 2.0;
+        if (halfSpan(turned, tanY, tanX, middle) > kFrameShare)
+            nearest = middle;
+        else
+            farthest = middle;
+    }
+    return farthest;
+}
 
 Placement placementOf(const std::vector<glm::dvec3>& positions, const ObjSceneSetup& setup) {
     glm::dvec3 low = positions[0], high = positions[0];
@@ -211,58 +268,107 @@ Placement placementOf(const std::vector<glm::dvec3>& positions, const ObjSceneSe
         high = glm::max(high, p);
     }
     Placement placement;
+    placement.low = low;
+    placement.high = high;
     if (setup.fit) {
         placement.centre = (low + high) / 2.0;
+        placement.turn = viewTurn(setup.view, setup.fovDegrees);
         const double size = std::max({high.x - low.x, high.y - low.y, high.z - low.z});
         placement.scale = size > 0.0 ? kFitSize / size : 1.0;
-        // Straight ahead at the distance where the outermost position, as the default
-        // camera sees it, lies kFrameShare of the way from the centre of the view to its
-        // edge: y / (distance - z) = share * tan(fov / 2), and x the same with the aspect.
-        const double tangent = std::tan(setup.fovDegrees * (kPi / 180.0) / 2.0);
-        const double vertical = kFrameShare * tangent, horizontal = vertical * setup.aspect;
-        double distance = 0.0;
-        for (const glm::dvec3& p : positions) {
-            const glm::dvec3 v = (p - placement.centre) * placement.scale;
-            distance = std::max(
-                distance, v.z + std::max(std::abs(v.y) / vertical, std::abs(v.x) / horizontal));
-        }
-        placement.offset = glm::dvec3(0.0, 0.0, -distance);
+        std::vector<glm::dvec3> turned;
+        turned.reserve(positions.size());
+        for (const glm::dvec3& p : positions)
+            turned.push_back(placement.turn.apply(p - placement.centre) * placement.scale);
+        const double tanY = std::tan(setup.fovDegrees * (kPi / 180.0) / 2.0);
+        placement.offset = glm::dvec3(0.0, 0.0, -fitDistance(turned, tanY, tanY * setup.aspect));
     }
-    auto place = [&](glm::dvec3 p) {
-        return (p - placement.centre) * placement.scale + placement.offset;
-    };
-    placement.low = place(low);
-    placement.high = place(high);
     return placement;
 }
 
-LightRigAnchor anchorOf(const Placement& placement) {
-    return {(placement.low + placement.high) / 2.0, length(placement.high - placement.low) / 2.0};
+double largestExtent(const Placement& placement) {
+    const glm::dvec3 extent = placement.high - placement.low;
+    return std::max({extent.x, extent.y, extent.z});
 }
 
-// A floor under the model: a square kGroundSpan model sizes across, centred below it, at
-// the height of its lowest position, matte grey, facing up. A mesh of its own after the
-// model's, so where they touch, the model wins the tie (docs/model.md).
+// The rig hangs at the model's box's centre, placed, with half the box's diagonal, scaled.
+LightRigAnchor anchorOf(const Placement& placement) {
+    return {placement.place((placement.low + placement.high) / 2.0),
+            length((placement.high - placement.low) * placement.scale) / 2.0};
+}
+
+// The camera a fitted model is seen from when none is given: at the origin, looking at its
+// centre, its up as placed (straight above or below: the frame's up). The default camera's
+// view; turntables and the window's orbit turn about the model's up.
+CameraPose modelCamera(const Placement& placement) {
+    CameraPose camera;
+    camera.target = anchorOf(placement).centre;
+    const glm::dvec3 up = placement.turn.apply(glm::dvec3(0.0, 1.0, 0.0));
+    if (up.x != 0.0 || up.y != 0.0) camera.up = up;
+    return camera;
+}
+
+// A floor under the model: a square kGroundSpan model sizes across, centred below it,
+// kFloorGap model sizes below its lowest position, matte grey, facing the model's up; placed
+// with the model. A mesh of its own after the model's, so where they touch, the model wins
+// the tie (docs/model.md).
 constexpr double kGroundSpan = 100.0;
 Mesh groundMesh(const Placement& placement) {
     const glm::dvec3 centre = (placement.low + placement.high) / 2.0;
-    const double half =
-        kGroundSpan *
-        std::max({placement.high.x - placement.low.x, placement.high.y - placement.low.y,
-                  placement.high.z - placement.low.z}) /
-        2.0;
-    const double y = placement.low.y;
+    const double size = largestExtent(placement);
+    const double half = kGroundSpan * size / 2.0;
+    const double y = placement.low.y - kFloorGap * size;
     Mesh ground;
-    ground.positions = {{centre.x - half, y, centre.z - half},
-                        {centre.x + half, y, centre.z - half},
-                        {centre.x + half, y, centre.z + half},
-                        {centre.x - half, y, centre.z + half}};
-    ground.normals.assign(4, glm::dvec3(0.0, 1.0, 0.0));
+    for (const glm::dvec3 corner : {glm::dvec3(centre.x - half, y, centre.z - half),
+                                    glm::dvec3(centre.x + half, y, centre.z - half),
+                                    glm::dvec3(centre.x + half, y, centre.z + half),
+                                    glm::dvec3(centre.x - half, y, centre.z + half)})
+        ground.positions.push_back(placement.place(corner));
+    ground.normals.assign(4, placement.turn.apply(glm::dvec3(0.0, 1.0, 0.0)));
     ground.triangles = {{0, 3, 2}, {0, 2, 1}};
     ground.triangleMaterials = {0, 0};
     ground.triangleLines = {0, 0};
     ground.materials = {MeshMaterial{Material{glm::dvec3(0.7), glm::dvec3(0.0), 1.0}, {}}};
     return ground;
+}
+
+std::pair<glm::dvec3, glm::dvec3> boxOf(const std::vector<glm::dvec3>& positions) {
+    glm::dvec3 low = positions[0], high = positions[0];
+    for (const glm::dvec3& p : positions) {
+        low = glm::min(low, p);
+        high = glm::max(high, p);
+    }
+    return {low, high};
+}
+
+// Scene::model for a model placed as placement says, its mesh made.
+ModelPlacement placementFacts(const ObjModel& model, const std::vector<bool>& far,
+                              const Placement& placement, const Mesh& mesh, bool fitted) {
+    ModelPlacement facts;
+    std::vector<glm::dvec3> read;
+    for (std::size_t i = 0; i < model.positions.size(); ++i)
+        if (!far[i]) read.push_back(model.positions[i]);
+    std::tie(facts.readLow, facts.readHigh) = boxOf(read);
+    std::tie(facts.placedLow, facts.placedHigh) = boxOf(mesh.positions);
+    const CameraPose camera = modelCamera(placement);
+    facts.centre = camera.target;
+    facts.up = camera.up;
+    facts.fitted = fitted;
+    return facts;
+}
+
+// A model read as y-up that looks like a z-up one lying on its back (Blender, most CAD and
+// scanning tools write z-up): its largest extent along z (towards the camera), its smallest
+// along y, and that at most 0.6 of the first. A flat model (no height at all) is a decal or
+// a tile, and is left alone. A y-up car or boat, long along z, gets the note too; it says
+// "if". The note, or nothing.
+std::optional<std::string> lyingDown(const ModelPlacement& model) {
+    const glm::dvec3 extent = model.readHigh - model.readLow;
+    if (!(extent.y > 0.0 && extent.z >= extent.x && extent.y <= extent.x &&
+          extent.y <= 0.6 * extent.z))
+        return {};
+    return "the model is longest along z and shallowest along y, as a z-up model "
+           "(Blender, most CAD and scanning tools) lies on its back when read as y-up; if it is "
+           "one, give --up z";
 }
 
 // A model's corner as a mesh vertex: its position and its normal, bit for bit, so that
@@ -279,6 +385,12 @@ std::vector<Light> lightRig(const LightRigAnchor& anchor, const CameraPose& came
     // From the model towards the eye; an eye at the centre uses the camera's own backward axis.
     glm::dvec3 back = normalizedOrZero(camera.position - anchor.centre);
     if (back == glm::dvec3(0.0)) back = normalizedOrZero(camera.position - camera.target);
+    // Level with the camera's up (a model's up, for its own camera): the rig keeps its
+    // height above the model however far the camera looks down, so the sides it sees stay
+    // lit as the front view lights them. Seen from straight along up, back stays as it is.
+    const glm::dvec3 upAxis = normalizedOrZero(camera.up);
+    const glm::dvec3 level = normalizedOrZero(back - upAxis * dot(back, upAxis));
+    if (level != glm::dvec3(0.0)) back = level;
     // Seen from straight along the camera's up, the camera's own right (then perpendicular
     // to back) keeps the frame turning with the view.
     glm::dvec3 right = normalizedOrZero(glm::cross(camera.up, back));
@@ -326,9 +438,7 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
                 farFaces[f] = farFaces[f] || far[p];
     }
     const Placement placement = placementOf(anyFar ? near : positions, setup);
-    auto place = [&](glm::dvec3 p) {
-        return (p - placement.centre) * placement.scale + placement.offset;
-    };
+    auto place = [&](glm::dvec3 p) { return placement.place(p); };
     // Made when a corner first needs one: a model that gives every normal never pays for it.
     std::optional<SmoothNormals> smooth;
 
@@ -336,7 +446,9 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
     scene.ambient = setup.ambient;
     if (setup.lightRig) {
         scene.lightRig = anchorOf(placement);
-        scene.lights = lightRig(*scene.lightRig, setup.camera);
+        scene.lights =
+            lightRig(*scene.lightRig,
+                     setup.cameraGiven || !setup.fit ? setup.camera : modelCamera(placement));
     } else {
         scene.lights = {Light{glm::dvec3(0.0, 4.0, 0.0), glm::dvec3(1.0), 0}};
     }
@@ -370,7 +482,7 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
             triangle[k] = vertexOf.indexOf(key);
             if (corners.size() == before) continue; // a vertex already made
             mesh.positions.push_back(place(positions[corner.position]));
-            mesh.normals.push_back(key.normal);
+            mesh.normals.push_back(placement.turn.apply(key.normal)); // turned with the model
             if (anyColor) {
                 const auto& color = model.colors[corner.position];
                 mesh.colors.push_back(color ? glm::dvec4(*color, 1.0) : glm::dvec4(0.0));
@@ -393,8 +505,19 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
                          "every one of the model's " + std::to_string(model.triangles.size()) +
                              " triangles is degenerate (two corners at one position, or no area): "
                              "nothing is left to render");
+    scene.model = placementFacts(model, far, placement, mesh, setup.fit);
+    if (!setup.upGiven) {
+        if (std::optional<std::string> lying = lyingDown(*scene.model))
+            scene.warnings.push_back(sceneLocation(fileName, 0) + "warning: " + *lying);
+    }
     scene.meshes.push_back(std::move(mesh));
-    if (setup.ground) scene.meshes.push_back(groundMesh(placement));
+    if (setup.ground) {
+        scene.meshes.push_back(groundMesh(placement));
+        const auto [low, high] = boxOf(scene.meshes.back().positions);
+        scene.model->floor = true;
+        scene.model->floorLow = low;
+        scene.model->floorHigh = high;
+    }
     if (degenerate > 0)
         scene.warnings.push_back(sceneLocation(fileName, 0) +
                                  "warning: " + std::to_string(degenerate) +

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "scene/camera.h"
+#include "scene/model_view.h"
 #include "scene/obj_model.h"
 #include "scene/scene.h"
 
@@ -15,6 +16,7 @@ enum class UpAxis { PosX, NegX, PosY, NegY, PosZ, NegZ };
 
 struct ObjSceneSetup {
     UpAxis up = UpAxis::PosY;
+    bool upGiven = false; // --up was given: no note that the model may lie on its back
     // A corner without a normal averages the faces around it that meet its own face at
     // most this many degrees apart (0: flat faces; 180: smooth everywhere).
     double creaseDegrees = 60.0;
@@ -22,18 +24,25 @@ struct ObjSceneSetup {
     // as far away as makes it fill kFrameShare of the view (of this field of view and
     // aspect ratio); else the model stays where its file puts it.
     bool fit = true;
+    ModelView view = ModelView::ThreeQuarter; // the side the fit shows (model_view.h)
     double fovDegrees = 60.0;
     double aspect = 640.0 / 480.0;
     bool ground = true;   // a wide floor under the model, for its shadow
     bool lightRig = true; // key, fill and rim lights around the model; else one at (0, 4, 0)
     // The camera the rig is placed for (--camera-*): the model's place does not depend on
-    // it (the fit is for the default camera), its lights do.
+    // it (the fit is for the default camera), its lights do. When none is given, a fitted
+    // model's rig is placed for the model's own camera (Scene::model's centre and up).
     CameraPose camera;
+    bool cameraGiven = false;
     glm::dvec3 ambient{0.1};
 };
 
 inline constexpr double kFitSize = 1.5;
 inline constexpr double kFrameShare = 0.8;
+// The floor sits this share of the model's largest extent below its lowest point: never in
+// the plane of a face of it (a flat model on a coplanar floor is noise), close enough that
+// a model standing on it still seems to.
+inline constexpr double kFloorGap = 0.002;
 
 // The key, fill and rim lights for a camera: at distances in units of the anchor's radius
 // from its centre along the camera's right, up and backward axes as seen from the camera

@@ -48,6 +48,18 @@ struct LightRigAnchor {
     double radius = 0.0;
 };
 
+// What an OBJ model became (scene/obj_scene.h), for --check, the default camera and the
+// turntable: its box as read, where it was placed, and its floor.
+struct ModelPlacement {
+    glm::dvec3 readLow{0.0}, readHigh{0.0};     // the file's coordinates (far vertices left out)
+    glm::dvec3 placedLow{0.0}, placedHigh{0.0}; // the box around its placed positions
+    glm::dvec3 centre{0.0};       // its box's centre, placed: what the default camera looks at
+    glm::dvec3 up{0.0, 1.0, 0.0}; // its up axis, placed: the default camera's (--view)
+    bool fitted = true;           // placed for the default camera (else where its file puts it)
+    bool floor = false;           // a floor was added, with this box:
+    glm::dvec3 floorLow{0.0}, floorHigh{0.0};
+};
+
 struct Scene {
     glm::dvec3 ambient{0.0};
     std::vector<Sphere> spheres;
@@ -59,6 +71,8 @@ struct Scene {
     // Set when lights are an OBJ model's rig, which follows the camera (docs/models.md);
     // a scene file's lights stay where the file puts them.
     std::optional<LightRigAnchor> lightRig;
+    // Set for an OBJ model: where it was placed (ModelPlacement).
+    std::optional<ModelPlacement> model;
     // Accepted oddities ("file:line: warning: ..."), printed by the caller.
     std::vector<std::string> warnings;
 };

@@ -47,10 +47,19 @@ std::string sceneSummary(const Scene& scene) {
             include(vertex.position, vertex.position);
         }
     });
+    std::string model;
+    if (const std::optional<ModelPlacement>& m = scene.model) {
+        model = "model as read: " + triple(m->readLow) + " to " + triple(m->readHigh) + "\n" +
+                "model as placed: " + triple(m->placedLow) + " to " + triple(m->placedHigh) +
+                (m->fitted ? "" : " (--no-fit: as read, its up axis turned)") + "\n" + "floor: " +
+                (m->floor ? triple(m->floorLow) + " to " + triple(m->floorHigh)
+                          : std::string("none (--no-ground)")) +
+                "\n";
+    }
     return "spheres: " + std::to_string(scene.spheres.size()) + "\n" +
            "triangles: " + std::to_string(triangleCount(scene)) + "\n" +
            "lights: " + std::to_string(scene.lights.size()) + "\n" +
            "materials: " + std::to_string(materials.size()) + "\n" + "bounds: " +
            (any ? triple(low) + " to " + triple(high) : "none (no spheres or triangles)") + "\n" +
-           "warnings: " + std::to_string(scene.warnings.size()) + "\n";
+           model + "warnings: " + std::to_string(scene.warnings.size()) + "\n";
 }

@@ -10,5 +10,6 @@
 // specular and shininess triples among spheres and triangle vertices), "warnings: N" and
 // "bounds: X,Y,Z to X,Y,Z" (the box around spheres and triangles, lights left out as in
 // sceneBounds; "bounds: none (no spheres or triangles)" when empty), numbers in their
-// shortest exact form.
+// shortest exact form. For an OBJ model, between bounds and warnings: "model as read:"
+// (the file's coordinates), "model as placed:" and "floor:" (its box, or none).
 std::string sceneSummary(const Scene& scene);

@@ -27,7 +27,8 @@ bool rebuildRenderer(Viewer& viewer, const Scene& scene, const RenderSettings& s
     }
     destroyRenderer(viewer.renderer, viewer.context);
     viewer.renderer = fresh;
-    viewer.bounds = sceneBounds(scene);
+    viewer.bounds = subjectBounds(scene, viewer.camera, viewer.options.fovDegrees,
+                                  double(viewer.options.width) / double(viewer.options.height));
     restartRefinement(viewer);
     return true;
 }

@@ -52,8 +52,11 @@ void open(Viewer& viewer, const Options& commandLine, const Scene& scene,
     viewer.options = commandLine;
     const Options& options = viewer.options;
     viewer.scene = scene;
-    viewer.bounds = sceneBounds(scene);
-    viewer.camera = options.camera;
+    viewer.camera = cameraFor(options, scene);
+    // The pivot and the fly speed come from what the camera is there to see, not from a
+    // floor that reaches a hundred model sizes away.
+    viewer.bounds = subjectBounds(scene, viewer.camera, options.fovDegrees,
+                                  double(options.width) / double(options.height));
     viewer.sceneName = options.scenePath.filename().string();
     viewer.continuous = options.redrawContinuously;
     viewer.benchFrames = options.benchWindowFrames;

@@ -415,7 +415,7 @@ class WhatAModelIsGiven(unittest.TestCase):
         # not the limit for a square).
         path = write_model("framing", CUBE)
         png = path + ".png"
-        drawn = run(RAYTRACER, path, "--no-ground", "-o", png)
+        drawn = run(RAYTRACER, path, "--no-ground", "--view", "front", "-o", png)
         self.assertEqual(drawn.returncode, 0, drawn.stderr)
         width, height, rows = pixels(png)
         covered = [y for y in range(height) if any(p != (255, 255, 255) for p in rows[y])]
@@ -452,7 +452,7 @@ class WhatAModelIsGiven(unittest.TestCase):
             with self.subTest(crease=crease):
                 scene = path + ".%s.scene" % crease
                 self.assertEqual(run(RAYTRACER, path, "--crease", crease, "--up", "z", "--no-ground",
-                                     "--save-scene", scene).returncode, 0)
+                                     "--view", "front", "--save-scene", scene).returncode, 0)
                 triangles = scene_triangles(scene)
                 corners_alike = all(t[0][1] == t[1][1] == t[2][1] for t in triangles)
                 self.assertEqual(corners_alike, flat)
@@ -494,10 +494,19 @@ class WhatAModelIsGiven(unittest.TestCase):
         for up, tallest in (("y", 2), ("z", 1), ("Z", 1), ("+z", 1), ("+Y", 2), ("-z", 1)):
             with self.subTest(up=up):
                 scene = path + ".%s.scene" % up
-                self.assertEqual(run(RAYTRACER, path, "--up", up, "--no-ground", "--save-scene", scene).returncode, 0)
+                self.assertEqual(run(RAYTRACER, path, "--up", up, "--no-ground", "--view", "front",
+                                     "--save-scene", scene).returncode, 0)
                 positions = [c[0] for t in scene_triangles(scene) for c in t]
                 extents = [max(p[a] for p in positions) - min(p[a] for p in positions) for a in range(3)]
                 self.assertEqual(extents.index(max(extents)), tallest)
+        # Read as y-up, the z-up prism lies on its back: one note says so, unless --up is given
+        # (even as y); a flat model is left alone.
+        note = b"warning: the model is longest along z and shallowest along y"
+        self.assertIn(note, run(RAYTRACER, path, "--check").stderr)
+        for options in (["--up", "y"], ["--up", "z"]):
+            self.assertNotIn(note, run(RAYTRACER, path, "--check", *options).stderr)
+        flat = write_model("flat_star", "v 0 0 0\nv 1 0 3\nv -1 0 3\nf 1 2 3\n")
+        self.assertNotIn(note, run(RAYTRACER, flat, "--check").stderr)
         for wrong in ("w", "zz", "+-z", ""):
             refused = run(RAYTRACER, path, "--up", wrong, "--check")
             self.assertEqual(refused.returncode, 2, refused.stderr)
@@ -528,6 +537,113 @@ class WhatAModelIsGiven(unittest.TestCase):
         self.assertIn(b": nothing is left to render", refused.stderr)
 
 
+def box_model(half, centre=(0.0, 0.0, 0.0), first=1):
+    """(v lines, f lines) of a box of half sizes half about centre, its indices from first."""
+    vs = ["v %r %r %r" % tuple(centre[a] + half[a] * s[a] for a in range(3))
+          for s in [(x, y, z) for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]]
+    faces = [(1, 2, 4, 3), (5, 7, 8, 6), (1, 5, 6, 2), (3, 4, 8, 7), (1, 3, 7, 5), (2, 6, 8, 4)]
+    return vs, ["f " + " ".join(str(first - 1 + i) for i in face) for face in faces]
+
+
+def corpus():
+    """The framing corpus, made here: {name: OBJ text}."""
+    models = {"flat_up": "v -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\nf 1 4 3 2\n",
+              "flat_facing": "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n"}
+    for axis, half in (("x", (4, 0.1, 0.1)), ("y", (0.1, 4, 0.1)), ("z", (0.1, 0.1, 4))):
+        vs, fs = box_model(half)
+        models["long_" + axis] = "\n".join(vs + fs) + "\n"
+    cube_vs, cube_fs = box_model((0.3, 0.3, 0.3), (0.0, 0.3, 0.0))  # on a slab of its own
+    slab_vs, slab_fs = box_model((2.0, 0.02, 2.0), (0.0, -0.02, 0.0), first=9)
+    models["own_floor"] = "\n".join(cube_vs + slab_vs + cube_fs + slab_fs) + "\n"
+    return models
+
+
+# The framing corpus's rules: the silhouette (without the floor) spans this share of the
+# frame's width or height, whichever is larger; no more than this share of the pixels are
+# isolated (each 48 levels or more from all 8 neighbours in some channel: the speckle of a
+# floor in the plane of a face), and none is the background's white (the floor fills the
+# three-quarter view, with no horizon).
+SPAN = (0.60, 0.95)
+ISOLATED = 0.005
+
+
+def isolated_share(rows):
+    height, width, count = len(rows), len(rows[0]), 0
+    for y in range(1, height - 1):
+        for x in range(1, width - 1):
+            p = rows[y][x]
+            if all(max(abs(p[c] - rows[y + dy][x + dx][c]) for c in range(3)) >= 48
+                   for dx in (-1, 0, 1) for dy in (-1, 0, 1) if dx or dy):
+                count += 1
+    return count / (width * height)
+
+
+class TheDefaultViewShowsTheModel(unittest.TestCase):
+    def test_every_model_of_the_corpus_is_framed_and_clean(self):
+        size = ["--width", "160", "--height", "120"]
+        for name, obj in corpus().items():
+            with self.subTest(model=name):
+                path = write_model("corpus_" + name, obj)
+                bare, full, reference = path + ".bare.png", path + ".png", path + ".reference.png"
+                for png, options in ((bare, ["--no-ground"]), (full, [])):
+                    drawn = run(RAYTRACER, path, "-o", png, "--validate", *size, *options)
+                    self.assertEqual(drawn.returncode, 0, drawn.stderr)
+                width, height, rows = pixels(bare)
+                seen = [(x, y) for y in range(height) for x in range(width) if rows[y][x] != (255, 255, 255)]
+                xs, ys = [x for x, _y in seen], [y for _x, y in seen]
+                span = max((max(xs) - min(xs) + 1) / width, (max(ys) - min(ys) + 1) / height)
+                _w, _h, rows = pixels(full)
+                noise = isolated_share(rows)
+                white = sum(1 for row in rows for p in row if p == (255, 255, 255))
+                print("corpus: %s: silhouette span %.2f, isolated pixels %.3f%%, white %d"
+                      % (name, span, 100 * noise, white))
+                self.assertTrue(SPAN[0] <= span <= SPAN[1], span)
+                self.assertLess(noise, ISOLATED)
+                self.assertEqual(white, 0)
+                # The reference builds the model by the same rules and agrees.
+                self.assertEqual(run(REFERENCE, path, "-o", reference, *size).returncode, 0)
+                compared = run(IMAGE_DIFF, full, reference, "--tolerance", "2", "--min-match", "99.9")
+                self.assertEqual(compared.returncode, 0, compared.stdout + compared.stderr)
+
+    def test_named_views_show_the_sides_they_name(self):
+        # A box wider (x) than deep (z) than tall (y): each view's silhouette has the
+        # proportions of the side it names; a flat quad seen from the top shows its face.
+        vs, fs = box_model((1.0, 0.25, 0.5))
+        path = write_model("views", "\n".join(vs + fs) + "\n")
+        expected = {"front": (1.0, 0.25), "back": (1.0, 0.25), "left": (0.5, 0.25), "right": (0.5, 0.25),
+                    "top": (1.0, 0.5), "bottom": (1.0, 0.5)}
+        for view, (across, up) in expected.items():
+            with self.subTest(view=view):
+                png = path + ".%s.png" % view
+                drawn = run(RAYTRACER, path, "--view", view, "--no-ground", "-o", png, "--width", "160",
+                            "--height", "160")
+                self.assertEqual(drawn.returncode, 0, drawn.stderr)
+                _w, _h, rows = pixels(png)
+                seen = [(x, y) for y in range(160) for x in range(160) if rows[y][x] != (255, 255, 255)]
+                w = max(x for x, _y in seen) - min(x for x, _y in seen) + 1
+                h = max(y for _x, y in seen) - min(y for _x, y in seen) + 1
+                self.assertAlmostEqual(h / w, up / across, delta=0.15 * up / across)
+        refused = run(RAYTRACER, path, "--view", "top", "--no-fit", "--check")
+        self.assertEqual(refused.returncode, 2)
+        self.assertIn(b"--view turns a model fitted to the view", refused.stderr)
+
+    def test_check_names_the_model_and_the_floor_apart(self):
+        vs, fs = box_model((2.0, 0.5, 1.0), (10.0, 20.0, 30.0))
+        path = write_model("check_bounds", "\n".join(vs + fs) + "\n")
+        check = run(RAYTRACER, path, "--check")
+        self.assertEqual(check.returncode, 0, check.stderr)
+        lines = dict(line.split(": ", 1) for line in check.stdout.decode().splitlines()[1:])
+        self.assertEqual(lines["model as read"], "8,19.5,29 to 12,20.5,31")
+        placed = [[float(c) for c in corner.split(",")] for corner in lines["model as placed"].split(" to ")]
+        floor = [[float(c) for c in corner.split(",")] for corner in lines["floor"].split(" to ")]
+        self.assertLess(max(placed[1][a] - placed[0][a] for a in range(3)), 3.0)  # about 1.5 across, turned
+        self.assertGreater(floor[1][0] - floor[0][0], 50.0)  # a hundred model sizes
+        no_floor = run(RAYTRACER, path, "--check", "--no-ground", "--no-fit")
+        lines = dict(line.split(": ", 1) for line in no_floor.stdout.decode().splitlines()[1:])
+        self.assertEqual(lines["floor"], "none (--no-ground)")
+        self.assertEqual(lines["model as placed"], "8,19.5,29 to 12,20.5,31 (--no-fit: as read, its up axis turned)")
+
+
 def model_brightness(png):
     """(mean brightness 0..255 of the pixels that are not the white background, their count)."""
     _width, _height, rows = pixels(png)
@@ -543,7 +659,9 @@ RIG_MARGIN = 0.20
 
 
 class TheRigFollowsTheCamera(unittest.TestCase):
-    SIZE = ["--width", "96", "--height", "72", "--no-ground"]
+    # The model seen face on, so that behind and the side are its other faces.
+    SIZE = ["--width", "96", "--height", "72", "--no-ground", "--view", "front"]
+    MODEL_ONLY = ("--no-ground", "--view", "front")
 
     def centre(self, path):
         scene = path + ".centre.scene"
@@ -552,8 +670,8 @@ class TheRigFollowsTheCamera(unittest.TestCase):
         return tuple((min(p[a] for p in positions) + max(p[a] for p in positions)) / 2 for a in range(3))
 
     def render(self, source, png, *options):
-        # A saved scene has its floor or not already: --no-ground is for models alone.
-        size = [o for o in self.SIZE if o != "--no-ground" or source.endswith(".obj")]
+        # A saved scene has its floor and view already: those options are for models alone.
+        size = [o for o in self.SIZE if o not in self.MODEL_ONLY or source.endswith(".obj")]
         drawn = run(RAYTRACER, source, "-o", png, "--validate", *size, *options)
         self.assertEqual(drawn.returncode, 0, drawn.stderr)
         return model_brightness(png)

@@ -113,7 +113,7 @@ class ObjToScene(unittest.TestCase):
     def test_fit_puts_the_model_ahead_filling_the_share_of_the_view(self):
         # The cube made 5 units wide along x only, and moved far off.
         box = "".join("v %g %g %g\n" % (10 + 2.5 * x, -4 + y, 7 + z) for x in (-1, 1) for y in (-1, 1) for z in (-1, 1))
-        run, scene = convert(box + "f 1 2 4 3\nf 5 6 8 7\nf 1 3 7 5\n", "cube_fit", "--fit")
+        run, scene = convert(box + "f 1 2 4 3\nf 5 6 8 7\nf 1 3 7 5\n", "cube_fit", "--fit", "--view", "front")
         self.assertEqual(run.returncode, 0, run.stderr)
         positions = [c["pos"] for t in triangles_of(scene) for c in t]
         for axis in (0, 1):

@@ -114,6 +114,9 @@ std::vector<std::vector<std::string>> optionSets() {
         {"model.obj", "--up", "z", "--crease", "0", "--no-ground"},
         {"model.obj", "--up", "-x", "--crease", "180"},
         {"model.obj", "--crease", "12.5"},
+        {"model.obj", "--view", "top", "--up", "Z"},
+        {"model.obj", "--no-fit", "--camera-pos", "0,0,0"}, // the default camera, but given
+        {"a.scene", "-o", "f{frame}.png", "--turntable", "4", "--orbit-center", "1,-2,3.5"},
         {"a.scene", "-o", "out.jpg", "--quality", "1"},
         {"a.scene", "-o", "o.JPEG", "--quality", "100"},
         {"a.scene", "-o", "out.jpg", "--quality", "90"}, // the default, but given
