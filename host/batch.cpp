@@ -56,6 +56,7 @@ void renderScene(const Options& options, const Context& context, KernelCache& ke
                  const Scene& scene, const std::string& name,
                  const std::vector<FrameView>& frames) {
     RenderSettings settings = renderSettingsFrom(options);
+    settings.terminatorFix = terminatorFixFor(options, scene);
     settings.floatOutput = holdsFloats(*outputFormatOf(options.outputPath));
     Renderer renderer;
     HeadlessTarget target;

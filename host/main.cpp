@@ -89,6 +89,7 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
     openHeadlessDevice(context, options);
     RenderSettings settings = renderSettingsFrom(options);
     settings.camera = cameraFor(options, scene);
+    settings.terminatorFix = terminatorFixFor(options, scene);
     // -o out.pfm|out.exr: the averages before the 8-bit rounding (docs/accuracy.md).
     settings.floatOutput = writing && holdsFloats(*outputFormatOf(options.outputPath));
     createRenderer(renderer, context, scene, settings);

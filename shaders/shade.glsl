@@ -14,7 +14,21 @@ struct SurfacePoint {
     vec3 kr;               // mirror weight: ks times the material's mirror share
     float shininess;       // Phong exponent
     uint flatPatch;        // the hit triangle's flat patch, or NO_PATCH for a sphere
+    rvec3 shadowPoint;     // where shadow rays leave from: position, or shifted (below)
 };
+
+// Hanika's shadow terminator fix ("Hacking the Shadow Terminator", Ray Tracing Gems II,
+// ch. 4): p moved, for each vertex i whose tangent plane (normal n_i, unit, facing the
+// shaded side) p lies below, up onto that plane, the moves weighted by the barycentrics:
+// p - sum w_i min(0, dot(p - v_i, n_i)) n_i. On a coarse smooth-shaded mesh the shadow ray
+// then clears the neighbouring faces that would otherwise shadow where the smooth normal
+// still faces the light; on a flat face (every n_i the face's normal) it is p itself.
+rvec3 shiftedShadowPoint(rvec3 p, rvec3 w, rvec3 a, rvec3 b, rvec3 c, rvec3 na, rvec3 nb,
+                         rvec3 nc) {
+    real da = min(real(0.0), dot(p - a, na)), db = min(real(0.0), dot(p - b, nb)),
+         dc = min(real(0.0), dot(p - c, nc));
+    return p - (w.x * da * na + w.y * db * nb + w.z * dc * nc);
+}
 
 // v scaled to unit length, or fallback when v is zero (normalize(0) is NaN on lavapipe);
 // dividing by the largest component first keeps tiny and huge vectors in range.
@@ -81,6 +95,7 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
         s.kr = sceneHasMirrorShares ? s.ks * m.specular.w : s.ks;
         s.shininess = m.diffuseShininess.w;
         s.flatPatch = NO_PATCH;
+        s.shadowPoint = s.position;
     } else {
         rvec4 cornerA = fetchCorner(hit.index, 0u), cornerB = fetchCorner(hit.index, 1u),
               cornerC = fetchCorner(hit.index, 2u);
@@ -115,6 +130,15 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
                                           wf.z * (mc.specular.xyz * mc.specular.w)
                                     : s.ks;
         s.flatPatch = cornerWord(cornerA);
+        s.shadowPoint = s.position;
+        if (shiftShadowOrigin) {
+            // The vertex normals, unit, on the side the shading normal faces once flipped.
+            real facing = dot(s.normal, ray.direction) > 0.0 ? real(-1.0) : real(1.0);
+            s.shadowPoint = shiftedShadowPoint(
+                s.position, w, a, b, c, facing * normalizeOr(rvec3(va.xyz), s.geometricNormal),
+                facing * normalizeOr(rvec3(vb.xyz), s.geometricNormal),
+                facing * normalizeOr(rvec3(vc.xyz), s.geometricNormal));
+        }
     }
     if (dot(s.normal, ray.direction) > 0.0) s.normal = -s.normal;
     return s;
@@ -131,6 +155,10 @@ Ray leavingRay(SurfacePoint s, rvec3 d) {
 // an any-hit shadow ray from the offset origin, limited to the distance to the light.
 bool inShadow(SurfacePoint s, rvec3 lightPosition, rvec3 l) {
     Ray ray = leavingRay(s, l);
+    if (shiftShadowOrigin) {
+        rvec3 side = dot(s.geometricNormal, l) > 0.0 ? s.geometricNormal : -s.geometricNormal;
+        ray.origin = offsetRayOrigin(s.shadowPoint, side, s.magnitude, s.normalError);
+    }
     rvec3 toLight = lightPosition - ray.origin;
     real lightDistance = length(toLight);
     ray.direction = toLight / lightDistance;

@@ -105,6 +105,10 @@ using uint = std::uint32_t;
 // bool: some material's mirror share (GpuMaterial's specular.w) is not 1, so the mirror
 // weight is not simply ks (a highlight without a mirror: MTL illum 2).
 #define SPEC_HAS_MIRROR_SHARES 17
+// bool: shadow rays leave a smooth-shaded triangle from its hit point moved onto the vertex
+// normals' tangent planes (Hanika, "Hacking the Shadow Terminator", Ray Tracing Gems II):
+// --terminator, on for OBJ models by default, off for scene files.
+#define SPEC_SHIFT_SHADOW_ORIGIN 18
 // The most spheres baked in: the closest-hit loop over them is unrolled, one test each.
 #define MAX_BAKED_SPHERES 15u
 #define RAY_OFFSET_FIXED 0u       // 1e-4 along the normal

@@ -28,6 +28,8 @@ layout(constant_id = SPEC_HAS_SPECULAR) const bool sceneHasSpecular = true;
 // Whether some material's mirror share is not 1 (a highlight without a mirror): else the
 // mirror weight is ks itself.
 layout(constant_id = SPEC_HAS_MIRROR_SHARES) const bool sceneHasMirrorShares = true;
+// Whether shadow rays leave from the hit point moved as Hanika's terminator fix does (shade.glsl).
+layout(constant_id = SPEC_SHIFT_SHADOW_ORIGIN) const bool shiftShadowOrigin = false;
 
 // The method choices of the command line (host/packing/kernel_choices.h); the defaults are the
 // robust methods, and the unchosen method is compiled out.

@@ -94,6 +94,7 @@ std::string commandLine(const Options& options) {
     addSwitch("--no-ground", !options.ground);
     addChoice("--view", modelViewNames(), options.modelView, defaults.modelView);
     addSwitch("--no-fit", !options.fit);
+    if (options.terminator) add("--terminator", *options.terminator ? "on" : "off");
 
     // Then how the program runs, which leaves the image as it is.
     addChoice("--accel", accelerationNames(), options.acceleration, defaults.acceleration);
@@ -157,5 +158,6 @@ std::string headlessCommand(const Options& options, const CameraPose& camera, in
     view.ground = options.ground;
     view.modelView = options.modelView;
     view.fit = options.fit;
+    view.terminator = options.terminator;
     return commandLine(view);
 }

@@ -191,6 +191,10 @@ std::string usageText() {
            "                        (default: front right, from above), front, back, left,\n"
            "                        right, top, bottom\n"
            "  --no-fit              an OBJ model stays where its file puts it, in its units\n"
+           "  --terminator on|off   shadow rays leave smooth-shaded triangles from the hit point\n"
+           "                        moved onto the vertex normals' tangent planes (Hanika), so\n"
+           "                        coarse meshes lose their polygonal shadow patches (default:\n"
+           "                        on for OBJ models, off for scene files)\n"
            "  --save-scene FILE     write the scene as read (an OBJ model as built: fitted,\n"
            "                        lit, with its normals) in the scene format; alone, nothing\n"
            "                        else is done\n"
@@ -262,6 +266,11 @@ Options parseOptions(int argc, const char* const* argv) {
             options.modelView = parseChoice(arg, value(), modelViewNames());
             given.view = true;
             noteModelOnly(given, arg);
+        } else if (arg == "--terminator") {
+            const std::string& text = value();
+            if (text != "on" && text != "off")
+                throw UsageError("--terminator expects on or off, got '" + text + "'");
+            options.terminator = text == "on";
         } else if (arg == "--no-fit") {
             options.fit = false;
             noteModelOnly(given, arg);

@@ -47,6 +47,9 @@ struct Options {
     bool ground = true;
     ModelView modelView = ModelView::ThreeQuarter;
     bool fit = true;
+    // --terminator on|off: Hanika's shadow terminator fix; unset: on for OBJ models, off
+    // for scene files (terminatorFixFor).
+    std::optional<bool> terminator;
     bool checkOnly = false; // --check: parse and validate the scene, print what it holds; no Vulkan
     bool useCache = true;   // --no-cache: no shader or pipeline cache on disk
     std::uint32_t regionSide =

@@ -48,3 +48,7 @@ glm::dvec3 turntableAxis(const Scene& scene, const CameraPose& camera) {
     if (scene.model) return glm::normalize(camera.up);
     return floorAxis(scene, camera.up);
 }
+
+bool terminatorFixFor(const Options& options, const Scene& scene) {
+    return options.terminator.value_or(scene.model.has_value());
+}

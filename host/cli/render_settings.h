@@ -25,6 +25,9 @@ glm::dvec3 turntableCentre(const Options& options, const Scene& scene, const Cam
 // scene's floor's normal (floorAxis), else the camera's up.
 glm::dvec3 turntableAxis(const Scene& scene, const CameraPose& camera);
 
+// Whether shadow rays use the shadow terminator fix: --terminator, else on for an OBJ model.
+bool terminatorFixFor(const Options& options, const Scene& scene);
+
 // The device of a headless render (one image or a batch): an instance, with the validation
 // layer for --validate, the device --device names (with fp64 when --precision fp64 asks
 // for it), and the image size checked against what it can hold.

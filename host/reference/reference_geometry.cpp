@@ -11,8 +11,8 @@
 
 namespace reference_geometry {
 
-World prepareWorld(const Scene& scene) {
-    World world{scene, int(scene.spheres.size()), {}};
+World prepareWorld(const Scene& scene, bool shiftShadowOrigin) {
+    World world{scene, int(scene.spheres.size()), {}, shiftShadowOrigin};
     world.triangles.reserve(triangleCount(scene));
     int k = 0; // the triangle's number (scene_triangles.h)
     forEachTriangle(scene, [&](const Triangle& triangle) {
@@ -120,6 +120,7 @@ SurfacePoint surfaceAt(const World& world, const Ray& ray, const Hit& hit) {
         p.normal = (p.position - sphere.center) / sphere.radius;
         p.material = sphere.material;
         p.mirrorWeight = mirrorWeight(sphere.material);
+        p.shadowPoint = p.position;
     } else {
         const Triangle tri = triangleAt(world.scene, std::size_t(hit.id - world.sphereCount));
         const Vertex* v = tri.vertices;
@@ -137,6 +138,16 @@ SurfacePoint surfaceAt(const World& world, const Ray& ray, const Hit& hit) {
         p.material.specular = w.x * m0.specular + w.y * m1.specular + w.z * m2.specular;
         p.material.shininess = w.x * m0.shininess + w.y * m1.shininess + w.z * m2.shininess;
         p.mirrorWeight = w.x * mirrorWeight(m0) + w.y * mirrorWeight(m1) + w.z * mirrorWeight(m2);
+        p.shadowPoint = p.position;
+        if (world.shiftShadowOrigin) {
+            const double facing = glm::dot(p.normal, ray.dir) > 0 ? -1.0 : 1.0;
+            for (int i = 0; i < 3; ++i) {
+                const double size = glm::length(v[i].normal);
+                const dvec3 ni = facing * (size > 0 ? v[i].normal / size : p.normal);
+                p.shadowPoint -=
+                    w[i] * std::min(0.0, glm::dot(p.position - v[i].position, ni)) * ni;
+            }
+        }
     }
     if (glm::dot(p.normal, ray.dir) > 0) p.normal = -p.normal;
     return p;

@@ -41,6 +41,8 @@ struct World {
     const Scene& scene;
     int sphereCount = 0;
     std::vector<RefTriangle> triangles; // those with non-zero area only
+    // Shadow rays leave from SurfacePoint::shadowPoint, Hanika's shifted point (--terminator).
+    bool shiftShadowOrigin = false;
 };
 
 struct Hit {
@@ -55,6 +57,11 @@ struct SurfacePoint {
     Material material;
     // The mirror weight: ks times the mirror share; on a triangle each corner's, interpolated.
     dvec3 mirrorWeight{0.0};
+    // Where shadow rays leave from: position, or with World::shiftShadowOrigin on a triangle,
+    // position - sum w_i min(0, dot(position - v_i, n_i)) n_i over its vertices v_i with their
+    // unit normals n_i turned to the side the shading normal faces (Hanika's shadow
+    // terminator fix; the kernel's shiftedShadowPoint).
+    dvec3 shadowPoint{0.0};
 };
 
 struct Camera {
@@ -76,7 +83,7 @@ struct HitRules {
 
 // The scene's primitives as the reference intersects them: every sphere, and the triangles
 // of non-zero area (no ray can hit the others).
-World prepareWorld(const Scene& scene);
+World prepareWorld(const Scene& scene, bool shiftShadowOrigin = false);
 
 // The nearest surface the ray meets before hit.t (hit as it comes: infinity, or a bound),
 // never the primitive it leaves; false when there is none.

@@ -76,11 +76,20 @@ dvec3 shadeLocal(const World& world, const SurfacePoint& p, dvec3 view, int id,
             record();
             continue;
         }
-        if (occluded(world, Ray{p.position, l, id}, distance)) {
+        // The shadow ray: from the point towards the light, or with the terminator fix from
+        // the shifted point, its direction and length taken from there, as the kernel does.
+        Ray shadow{p.position, l, id};
+        double reach = distance;
+        if (world.shiftShadowOrigin) {
+            const dvec3 fromShifted = light.position - p.shadowPoint;
+            reach = glm::length(fromShifted);
+            shadow = Ray{p.shadowPoint, fromShifted / reach, id};
+        }
+        if (occluded(world, shadow, reach)) {
             if (story) { // what blocks it: the nearest surface before the light
                 Hit blocker;
-                blocker.t = distance;
-                closestHit(world, Ray{p.position, l, id}, blocker);
+                blocker.t = reach;
+                closestHit(world, shadow, blocker);
                 entry.result = "blocked";
                 entry.blocker = storyPrimitive(world, blocker.id);
             }
@@ -225,7 +234,7 @@ int quantizeChannel(double c, bool truncate) {
 }
 
 glm::dvec3 traceEyeRay(const Scene& scene, const ReferenceSettings& settings, glm::dvec3 dir) {
-    const World world = prepareWorld(scene);
+    const World world = prepareWorld(scene, settings.terminatorFix);
     std::vector<Bounce> path;
     return traceRay(world, settings, Ray{dvec3(0.0), dir}, path);
 }
@@ -233,7 +242,7 @@ glm::dvec3 traceEyeRay(const Scene& scene, const ReferenceSettings& settings, gl
 ReferenceStory referencePixelStory(const Scene& scene, const ReferenceSettings& settings, int i,
                                    int j) {
     const Camera camera = makeCamera(settings);
-    const World world = prepareWorld(scene);
+    const World world = prepareWorld(scene, settings.terminatorFix);
     std::vector<Bounce> path;
     ReferenceStory story;
     story.sampleOffset = camera.samples.front();
@@ -248,7 +257,7 @@ ReferenceStory referencePixelStory(const Scene& scene, const ReferenceSettings& 
 std::vector<EyeRayFacts> referenceEyeRays(const Scene& scene, const ReferenceSettings& settings,
                                           const std::vector<glm::ivec2>& pixels, int threads) {
     const Camera camera = makeCamera(settings);
-    const World world = prepareWorld(scene);
+    const World world = prepareWorld(scene, settings.terminatorFix);
     std::vector<EyeRayFacts> facts(pixels.size());
     forEachEyeRay(camera, pixels, threads, [&]() -> EyeRayBody {
         return [&](std::size_t k, const Ray& ray) {
@@ -274,7 +283,7 @@ std::vector<EyeRayFacts> referenceEyeRays(const Scene& scene, const ReferenceSet
 
 glm::dvec3 tracePixel(const Scene& scene, const ReferenceSettings& settings, int i, int j) {
     const Camera camera = makeCamera(settings);
-    const World world = prepareWorld(scene);
+    const World world = prepareWorld(scene, settings.terminatorFix);
     std::vector<Bounce> path;
     return pixelColor(world, settings, camera, i, j, path);
 }
@@ -284,7 +293,7 @@ std::vector<RayTerms> referenceTerms(const Scene& scene, const ReferenceSettings
     const Camera camera = makeCamera(settings);
     if (settings.spp != 1)
         throw std::invalid_argument("the terms of a pixel need one sample per pixel");
-    const World world = prepareWorld(scene);
+    const World world = prepareWorld(scene, settings.terminatorFix);
     std::vector<RayTerms> terms(pixels.size());
     forEachEyeRay(camera, pixels, threads, [&]() -> EyeRayBody {
         return [&, path = std::vector<Bounce>()](std::size_t k, const Ray& ray) mutable {
@@ -302,7 +311,7 @@ template <typename Store>
 void renderPixels(const Scene& scene, const ReferenceSettings& settings, int threads,
                   const Store& store) {
     const Camera camera = makeCamera(settings);
-    const World world = prepareWorld(scene);
+    const World world = prepareWorld(scene, settings.terminatorFix);
     parallelFor(
         std::size_t(settings.height),
         [&](std::size_t row) {

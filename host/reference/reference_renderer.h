@@ -26,6 +26,9 @@ struct ReferenceSettings {
     // false: renderReferenceFloat averages the samples' colours as traced, above 1 or
     // below 0, for a caller that applies its own scale before clamping.
     bool clampSamples = true;
+    // Shadow rays leave smooth-shaded triangles from Hanika's shifted point (--terminator;
+    // reference_render turns it on for an OBJ model unless told otherwise, as Raytracer does).
+    bool terminatorFix = false;
 };
 
 // Renders the whole image. threads = 0 uses the host's policy (workerThreads(), base/parallel.h).

@@ -142,6 +142,7 @@ TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderS
         settings.depth > 0 && std::any_of(materials.begin(), materials.end(), mirrors);
     specialization.hasMirrorShares =
         specialization.hasMirrors && std::any_of(materials.begin(), materials.end(), shares);
+    specialization.shiftShadowOrigin = settings.terminatorFix && specialization.hasTriangles;
     if (settings.generalKernel) {
         // Every content-dependent part stays in: the kernel any scene could run. The
         // spheres' and triangles' loops still stop at their counts (0 for an absent kind),

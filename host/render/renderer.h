@@ -46,6 +46,9 @@ struct RenderSettings {
     // --count-work (hidden): the kernel counts the hierarchy's node visits and leaf
     // primitive tests (FrameTiming, --bench's JSON): a measure of work without timing noise.
     bool countWork = false;
+    // --terminator: shadow rays leave smooth-shaded triangles from the hit point moved as
+    // Hanika's shadow terminator fix does (shaders/shade.glsl); on for OBJ models by default.
+    bool terminatorFix = false;
 };
 
 // The samples one dispatch adds (GpuFrameParams.dispatch.zw): count 0 traces all of

@@ -5,8 +5,10 @@
 #include "scene/scene.h"
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 // One corner of a face: indices into ObjModel's positions and normals (0-based).
@@ -39,6 +41,10 @@ struct ObjModel {
     // diffuse texture its map_Kd names, if any.
     std::vector<MeshMaterial> materials;
     std::vector<std::string> warnings; // "file:line: warning: ..."
+    // What the material libraries hold that the shading model does not render, for --check:
+    // "texture maps (map_Kd)", "emission (Ke)", "transparency (d, Tr)", "other maps (bump,
+    // map_Ks, ...)", each with the number of materials that have it.
+    std::map<std::string, std::size_t> notRendered;
 };
 
 inline std::size_t faceCount(const ObjModel& model) {

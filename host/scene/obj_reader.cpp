@@ -12,8 +12,10 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <set>
+#include <utility>
 
 namespace {
 
@@ -156,10 +158,33 @@ void readMtl(const MtlFile& file, ObjModel& model, std::map<std::string, std::ui
     bool skipping = false; // the current material's lines are not read (one was wrong)
     bool any = false;
     std::map<std::uint32_t, int> illumOf; // applied at the end: a Ks may follow its illum
+    std::set<std::pair<std::string, std::uint32_t>> unrendered; // (what, material), once each
+    auto noteUnrendered = [&](const Statement& statement) {
+        if (!current) return;
+        const std::string_view keyword = statement.words[0];
+        auto value = [&](std::size_t i) {
+            return i < statement.words.size()
+                       ? std::strtod(std::string(statement.words[i]).c_str(), nullptr)
+                       : 0.0;
+        };
+        std::string what;
+        if (keyword == "map_Kd")
+            what = "texture maps (map_Kd)";
+        else if (keyword == "Ke" && (value(1) > 0.0 || value(2) > 0.0 || value(3) > 0.0))
+            what = "emission (Ke)";
+        else if ((keyword == "d" && statement.words.size() > 1 && value(1) < 1.0) ||
+                 (keyword == "Tr" && value(1) > 0.0))
+            what = "transparency (d, Tr)";
+        else if (keyword.starts_with("map_") || keyword == "bump" || keyword == "disp" ||
+                 keyword == "decal" || keyword == "refl" || keyword == "norm")
+            what = "other maps (bump, map_Ks, ...)";
+        if (!what.empty() && unrendered.insert({what, *current}).second) ++model.notRendered[what];
+    };
     forEachStatement(*file.text, [&](const Statement& statement) {
         const Place place{file.path, statement.line};
         const std::string_view keyword = statement.words[0];
         if (keyword != "newmtl" && skipping) return;
+        noteUnrendered(statement);
         try {
             if (keyword == "newmtl") {
                 current.reset();

@@ -506,6 +506,7 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
                              " triangles is degenerate (two corners at one position, or no area): "
                              "nothing is left to render");
     scene.model = placementFacts(model, far, placement, mesh, setup.fit);
+    scene.model->notRendered = model.notRendered;
     if (!setup.upGiven) {
         if (std::optional<std::string> lying = lyingDown(*scene.model))
             scene.warnings.push_back(sceneLocation(fileName, 0) + "warning: " + *lying);

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -58,6 +59,9 @@ struct ModelPlacement {
     bool fitted = true;           // placed for the default camera (else where its file puts it)
     bool floor = false;           // a floor was added, with this box:
     glm::dvec3 floorLow{0.0}, floorHigh{0.0};
+    // What its materials hold that is not rendered, with how many materials hold it
+    // (ObjModel::notRendered).
+    std::map<std::string, std::size_t> notRendered;
 };
 
 struct Scene {

@@ -55,6 +55,12 @@ std::string sceneSummary(const Scene& scene) {
                 (m->floor ? triple(m->floorLow) + " to " + triple(m->floorHigh)
                           : std::string("none (--no-ground)")) +
                 "\n";
+        std::string unrendered;
+        for (const auto& [what, holding] : m->notRendered)
+            unrendered += (unrendered.empty() ? "" : "; ") + what + " in " +
+                          std::to_string(holding) + (holding == 1 ? " material" : " materials");
+        model +=
+            "not rendered: " + (unrendered.empty() ? std::string("nothing") : unrendered) + "\n";
     }
     return "spheres: " + std::to_string(scene.spheres.size()) + "\n" +
            "triangles: " + std::to_string(triangleCount(scene)) + "\n" +

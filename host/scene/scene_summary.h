@@ -11,5 +11,6 @@
 // "bounds: X,Y,Z to X,Y,Z" (the box around spheres and triangles, lights left out as in
 // sceneBounds; "bounds: none (no spheres or triangles)" when empty), numbers in their
 // shortest exact form. For an OBJ model, between bounds and warnings: "model as read:"
-// (the file's coordinates), "model as placed:" and "floor:" (its box, or none).
+// (the file's coordinates), "model as placed:", "floor:" (its box, or none) and "not
+// rendered:" (what its materials hold that the shading model leaves out, or nothing).
 std::string sceneSummary(const Scene& scene);

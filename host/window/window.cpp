@@ -98,6 +98,7 @@ void open(Viewer& viewer, const Options& commandLine, const Scene& scene,
     RenderSettings settings = renderSettingsFrom(options);
     settings.samplesPerPixel = viewer.sampleTarget;
     settings.camera = viewer.camera;
+    settings.terminatorFix = terminatorFixFor(options, scene);
     settings.progressive = true;
     createRenderer(viewer.renderer, viewer.context, scene, settings);
     createFrames(viewer);

@@ -642,6 +642,83 @@ class TheDefaultViewShowsTheModel(unittest.TestCase):
         lines = dict(line.split(": ", 1) for line in no_floor.stdout.decode().splitlines()[1:])
         self.assertEqual(lines["floor"], "none (--no-ground)")
         self.assertEqual(lines["model as placed"], "8,19.5,29 to 12,20.5,31 (--no-fit: as read, its up axis turned)")
+        self.assertEqual(lines["not rendered"], "nothing")
+
+    def test_check_names_what_the_materials_hold_that_is_not_rendered(self):
+        mtl = ("newmtl lamp\nKd 1 1 1\nKe 4 4 3\nmap_Kd lamp.png\n"
+               "newmtl glass\nKd 0.9 0.9 1\nd 0.3\nmap_Kd glass.png\nbump glass_n.png\n"
+               "newmtl opaque\nd 1\nTr 0\nKe 0 0 0\n")
+        path = write_model("not_rendered", "mtllib mats.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl lamp\nf 1 2 3\n",
+                           mtl)
+        check = run(RAYTRACER, path, "--check")
+        self.assertEqual(check.returncode, 0, check.stderr)
+        self.assertIn(b"\nnot rendered: emission (Ke) in 1 material; other maps (bump, map_Ks, ...) in 1 material; "
+                      b"texture maps (map_Kd) in 2 materials; transparency (d, Tr) in 1 material\n", check.stdout)
+
+
+def coarse_sphere(rings=6, sides=8):
+    """A UV sphere of few faces, its normals left to the smooth rule: the shadow terminator's
+    classic victim."""
+    vs = ["v 0 1 0"]
+    for i in range(1, rings):
+        t = math.pi * i / rings
+        vs += ["v %r %r %r" % (math.sin(t) * math.cos(2 * math.pi * j / sides), math.cos(t),
+                               math.sin(t) * math.sin(2 * math.pi * j / sides)) for j in range(sides)]
+    vs.append("v 0 -1 0")
+    faces = ["f 1 %d %d" % (2 + (j + 1) % sides, 2 + j) for j in range(sides)]
+    for i in range(rings - 2):
+        for j in range(sides):
+            a, b = 2 + i * sides + j, 2 + i * sides + (j + 1) % sides
+            faces.append("f %d %d %d %d" % (a, b, b + sides, a + sides))
+    last = len(vs)
+    faces += ["f %d %d %d" % (2 + (rings - 2) * sides + j, 2 + (rings - 2) * sides + (j + 1) % sides, last)
+              for j in range(sides)]
+    return "\n".join(vs + faces) + "\n"
+
+
+class TheShadowTerminator(unittest.TestCase):
+    def test_a_coarse_smooth_sphere_loses_its_polygonal_shadow_patches(self):
+        # Without the fix, faces next to the lit side shadow points whose smooth normal still
+        # faces the light: hard polygonal patches, pixels far darker than with the fix. The
+        # fix changes nothing else (the floor's flat normals move no shadow ray), and the
+        # reference, which shifts the same way, agrees.
+        path = write_model("terminator", coarse_sphere())
+        size = ["--width", "160", "--height", "120"]
+        images = {}
+        for setting in ("on", "off"):
+            png = path + ".%s.png" % setting
+            drawn = run(RAYTRACER, path, "--terminator", setting, "-o", png, "--validate", *size)
+            self.assertEqual(drawn.returncode, 0, drawn.stderr)
+            images[setting] = pixels(png)[2]
+        default = path + ".default.png"
+        self.assertEqual(run(RAYTRACER, path, "-o", default, *size).returncode, 0)
+        self.assertEqual(read(default), read(path + ".on.png"))  # on for a model by default
+        on, off = images["on"], images["off"]
+        # Measured: 142 pixels (of the sphere's about 5,000) 6 levels or more darker without
+        # the fix, 9 of them 16 or more; none brighter.
+        patches = sum(1 for y in range(120) for x in range(160) if sum(on[y][x]) - sum(off[y][x]) >= 18)
+        brighter = sum(1 for y in range(120) for x in range(160) if sum(off[y][x]) - sum(on[y][x]) >= 18)
+        print("terminator: %d pixels at least 6 levels darker without the fix, %d brighter" % (patches, brighter))
+        self.assertGreater(patches, 60)
+        self.assertEqual(brighter, 0)
+        reference = path + ".reference.png"
+        self.assertEqual(run(REFERENCE, path, "-o", reference, *size).returncode, 0)
+        compared = run(IMAGE_DIFF, path + ".on.png", reference, "--tolerance", "2", "--min-match", "99.9")
+        self.assertEqual(compared.returncode, 0, compared.stdout + compared.stderr)
+        # A scene file keeps the classic model unless asked; asked, the reference agrees too.
+        scene = path + ".scene"
+        self.assertEqual(run(RAYTRACER, path, "--save-scene", scene).returncode, 0)
+        for setting, same in (("on", True), ("off", False)):
+            png = path + ".scene.%s.png" % setting
+            self.assertEqual(run(RAYTRACER, scene, "--terminator", setting, "-o", png, *size).returncode, 0)
+            reference = path + ".scene.reference.%s.png" % setting
+            self.assertEqual(run(REFERENCE, scene, "--terminator", setting, "-o", reference, *size).returncode, 0)
+            compared = run(IMAGE_DIFF, png, reference, "--tolerance", "2", "--min-match", "99.9")
+            self.assertEqual(compared.returncode, 0, compared.stdout + compared.stderr)
+            self.assertEqual(read(png) == read(path + ".on.png"), same)
+        plain = path + ".scene.plain.png"
+        self.assertEqual(run(RAYTRACER, scene, "-o", plain, *size).returncode, 0)
+        self.assertEqual(read(plain), read(path + ".scene.off.png"))
 
 
 def model_brightness(png):

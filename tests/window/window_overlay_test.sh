@@ -14,7 +14,8 @@ readonly WIDTH=320 HEIGHT=240 SPP=4
 # Where ImGui's default style (font 13 px, padding 8, frame padding 4x3, spacing 8x4) puts
 # the label of the "grid" radio button of the panel at (8, 8): the first row after the three
 # lines of figures and a separator, after the "sampler" label (window coordinates).
-readonly GRID_X=104 GRID_Y=100
+# The folded "kernel" section's header, and the "grid" sampler button once it is unfolded.
+readonly KERNEL_X=60 KERNEL_Y=59 GRID_X=90 GRID_Y=82
 
 # The path of the COUNTth screenshot that LOG reports.
 screenshot_path() { # LOG COUNT
@@ -69,9 +70,16 @@ run_inside_xvfb() {
         fail "H: the window differs from headless with the overlay hidden: $(cat hidden-window-diff.txt)"
     fi
 
-    # Shown again, a real click on "grid": the kernel is rebuilt with --sampler grid.
+    # Shown again, a click unfolds "kernel" and a real click on "grid" rebuilds the kernel
+    # with --sampler grid.
     press_key "$id" h
     timeout 10 xdotool windowfocus --sync "$id" || true
+    timeout 10 xdotool mousemove --window "$id" $KERNEL_X $KERNEL_Y || true
+    sleep 1
+    timeout 10 xdotool mousedown 1 || true
+    sleep 0.5
+    timeout 10 xdotool mouseup 1 || true
+    sleep 1
     timeout 10 xdotool mousemove --window "$id" $GRID_X $GRID_Y || true
     sleep 1
     timeout 10 xdotool mousedown 1 || true

@@ -24,6 +24,7 @@ const char* const usage =
     "                        [--spp N] [--background R,G,B] [--fov DEG] [--truncate]\n"
     "                        [--threads N] [--camera-pos X,Y,Z] [--camera-target X,Y,Z]\n"
     "                        [--camera-up X,Y,Z] [--pixel X,Y] [--mistake NAME]\n"
+    "                        [--terminator on|off]\n"
     "Renders SCENE with the double-precision CPU reference (the model of docs/model.md).\n"
     "SCENE may be an OBJ model, built as Raytracer builds it by default (docs/models.md).\n"
     "  -o OUT                 OUT.png: 8-bit; OUT.pfm or OUT.exr: float, each pixel's average\n"
@@ -45,7 +46,9 @@ const char* const usage =
     "                         Raytracer compare's catalogue (docs/compare.md), one sample per\n"
     "                         pixel: an image to try compare on; OUT may then also be\n"
     "                         .jpg (stb's encoder) or .ppm\n"
-    "  --jpeg-quality Q       with --mistake and OUT.jpg: quality 1 to 100, default 90\n";
+    "  --jpeg-quality Q       with --mistake and OUT.jpg: quality 1 to 100, default 90\n"
+    "  --terminator on|off    shadow rays from Hanika's shifted point on smooth-shaded\n"
+    "                         triangles, as Raytracer's option; default on for an OBJ model\n";
 
 using tool_arguments::parseCount;
 using tool_arguments::parseFov;
@@ -119,6 +122,8 @@ int main(int argc, char** argv) {
     bool floatOutput = false; // -o OUT.pfm or OUT.exr
     Mistake mistake = Mistake::None;
     int jpegQuality = kDefaultJpegQuality;
+    bool cameraGiven = false;
+    std::optional<bool> terminator; // --terminator; unset: on for an OBJ model
     try {
         for (int k = 1; k < argc; ++k) {
             const std::string_view arg = argv[k];
@@ -147,16 +152,24 @@ int main(int argc, char** argv) {
                 settings.fovDegrees = parseFov(arg, value());
             } else if (arg == "--camera-pos") {
                 settings.cameraPosition = parseTriple(arg, value(), true);
+                cameraGiven = true;
                 if (!targetGiven)
                     settings.cameraTarget = settings.cameraPosition + glm::dvec3(0, 0, -1);
             } else if (arg == "--camera-target") {
                 settings.cameraTarget = parseTriple(arg, value(), true);
-                targetGiven = true;
+                targetGiven = cameraGiven = true;
             } else if (arg == "--camera-up") {
                 settings.cameraUp = parseTriple(arg, value(), true);
+                cameraGiven = true;
             } else if (arg == "--pixel") {
                 pixel = parsePixel(arg, value());
                 pixelGiven = true;
+            } else if (arg == "--terminator") {
+                const std::string_view text = value();
+                if (text != "on" && text != "off")
+                    throw UsageError("--terminator expects on or off, got '" + std::string(text) +
+                                     "'");
+                terminator = text == "on";
             } else if (arg == "--truncate") {
                 settings.truncate = true;
             } else if (arg == "--mistake") {
@@ -213,7 +226,9 @@ int main(int argc, char** argv) {
         modelSetup.fovDegrees = settings.fovDegrees;
         modelSetup.aspect = double(settings.width) / double(settings.height);
         modelSetup.camera = {settings.cameraPosition, settings.cameraTarget, settings.cameraUp};
+        modelSetup.cameraGiven = cameraGiven;
         const Scene scene = loadScene(scenePath, modelSetup);
+        settings.terminatorFix = terminator.value_or(scene.model.has_value());
         for (const std::string& warning : scene.warnings)
             std::fprintf(stderr, "%s\n", warning.c_str());
         if (!outputPath.empty()) {
