@@ -46,7 +46,7 @@ import sys
 FMT = "%.9g"
 
 MAX_MTL_BYTES = 64 << 20  # the largest material library read (Raytracer's kMaxMtlBytes)
-DEFAULT_MATERIAL = {"dif": (0.75, 0.75, 0.75), "spe": (0.1, 0.1, 0.1), "shi": 30.0, "mir": 0.0}
+DEFAULT_MATERIAL = {"dif": (0.75, 0.75, 0.75), "spe": (0.1, 0.1, 0.1), "shi": 30.0, "mir": 0.0, "emi": (0.0, 0.0, 0.0)}
 MIN_SHININESS, MAX_SHININESS = 1.0, 1000.0
 
 
@@ -184,6 +184,15 @@ def read_mtl(path, warn):
                 if len(rgb) == 1:
                     rgb = rgb * 3
                 current["dif" if keyword == "Kd" else "spe"] = tuple(clamp(c, 0.0, 1.0) for c in rgb)
+            elif keyword == "Ke":
+                if current is None:
+                    raise ConversionError(path, line, "Ke before any newmtl")
+                rgb = numbers(path, line, args, 1, "Ke", optional=2)
+                if len(rgb) == 2:
+                    raise ConversionError(path, line, "Ke expects 1 or 3 numbers, got 2")
+                if len(rgb) == 1:
+                    rgb = rgb * 3
+                current["emi"] = tuple(max(c, 0.0) for c in rgb)
             elif keyword == "Ns":
                 if current is None:
                     raise ConversionError(path, line, "Ns before any newmtl")
@@ -444,7 +453,8 @@ def read_obj(path, warn):
 FIT_SIZE = 1.5
 FRAME_SHARE = 0.8
 GROUND_SPAN = 100.0
-GROUND_MATERIAL = {"dif": (0.7, 0.7, 0.7), "spe": (0.0, 0.0, 0.0), "shi": 1.0, "mir": 1.0}
+GROUND_MATERIAL = {"dif": (0.7, 0.7, 0.7), "spe": (0.0, 0.0, 0.0), "shi": 1.0, "mir": 1.0, "emi": (0.0, 0.0, 0.0)}
+EMITTER_LIFT = 0.01  # an emitting material's light sits this share of the model's size off it
 def up_axis(text):
     """--up as users write it: an axis letter in either case, with an optional sign."""
     axis = text[1:] if text[:1] in ("+", "-") else text
@@ -637,19 +647,71 @@ def lying_down(positions):
             "CAD and scanning tools) lies on its back when read as y-up; if it is one, give --up z")
 
 
+INTERIOR_EYE_DEPTH = 0.4  # inside a room, the eye stands this share of its depth before its centre
+INTERIOR_RIG_SHARE = 0.15  # and the rig's lights hang at this share of their distances
+
+
+def encloses_its_centre(positions, corners, centre):
+    """Whether the model encloses centre as a room does: rays towards the 26 faces, edges and
+    corners of a box all meet a triangle, and at least 20 of the nearest turn their front to
+    the centre (Raytracer's enclosesItsCentre, operation for operation)."""
+    facing = away = 0
+    for i in (-1, 0, 1):
+        for j in (-1, 0, 1):
+            for k in (-1, 0, 1):
+                if i == 0 and j == 0 and k == 0:
+                    continue
+                d = normalize((float(i), float(j), float(k)))
+                nearest, front = math.inf, False
+                for ia, ib, ic in corners:
+                    a = positions[ia]
+                    e1, e2 = sub(positions[ib], a), sub(positions[ic], a)
+                    p = cross(d, e2)
+                    det = dot(e1, p)
+                    if det == 0.0:
+                        continue
+                    s = sub(centre, a)
+                    u = dot(s, p) / det
+                    if u < 0.0 or u > 1.0:
+                        continue
+                    q = cross(s, e1)
+                    v = dot(d, q) / det
+                    if v < 0.0 or u + v > 1.0:
+                        continue
+                    distance = dot(e2, q) / det
+                    if 0.0 < distance < nearest:
+                        nearest, front = distance, dot(cross(e1, e2), d) < 0.0
+                if nearest == math.inf:
+                    return False
+                if front:
+                    facing += 1
+                else:
+                    away += 1
+                    if away > 6:
+                        return False
+    return facing >= 20
+
+
 class Placement:
     """p -> turn(p - centre) * scale + offset: the model turned to show the camera the side
     its view names, scaled to FIT_SIZE across and put straight ahead of the default camera,
     as far away as makes its outermost position lie FRAME_SHARE of the way from the centre of
-    the view to its edge (without fit, p). low and high: the box around the positions,
-    unplaced."""
+    the view to its edge (without fit, p); inside, a room unturned with the eye
+    INTERIOR_EYE_DEPTH of its depth before its centre. low and high: the box around the
+    positions, unplaced."""
 
-    def __init__(self, positions, fit, fov, aspect, view):
+    def __init__(self, positions, fit, fov, aspect, view, inside=False):
         self.low = tuple(min(p[i] for p in positions) for i in range(3))
         self.high = tuple(max(p[i] for p in positions) for i in range(3))
         low, high = self.low, self.high
         self.centre, self.scale, self.offset, self.turn = (0.0, 0.0, 0.0), 1.0, (0.0, 0.0, 0.0), None
-        if fit:
+        self.inside = inside
+        if inside:
+            self.centre = tuple((low[i] + high[i]) / 2.0 for i in range(3))
+            size = max(high[i] - low[i] for i in range(3))
+            self.scale = FIT_SIZE / size if size > 0.0 else 1.0
+            self.offset = (0.0, 0.0, -(INTERIOR_EYE_DEPTH * (high[2] - low[2])) * self.scale)
+        elif fit:
             self.centre = tuple((low[i] + high[i]) / 2.0 for i in range(3))
             self.turn = view_turn(view, fov)
             size = max(high[i] - low[i] for i in range(3))
@@ -664,7 +726,8 @@ class Placement:
     def anchor(self):
         """(centre, radius) of the light rig: the box's centre placed, half its diagonal scaled."""
         centre = tuple((self.low[i] + self.high[i]) / 2.0 for i in range(3))
-        return self.place(centre), length(times(sub(self.high, self.low), self.scale)) / 2.0
+        radius = length(times(sub(self.high, self.low), self.scale)) / 2.0
+        return self.place(centre), radius * INTERIOR_RIG_SHARE if self.inside else radius
 
     def camera(self):
         """(eye, target, up) of the camera a fitted model is seen from when none is given."""
@@ -723,6 +786,42 @@ def vec(v):
     return "%s %s %s" % (fmt(v[0]), fmt(v[1]), fmt(v[2]))
 
 
+def emitter_lights(triangles, lift):
+    """A point light for each emitting material (Ke), in the order the triangles first use
+    them: at the area-weighted centroid of its triangles, lifted by lift along the sum of
+    their winding normals, its colour Ke clamped to [0, 1] (Raytracer's emitterLights)."""
+    order, sums = [], {}
+    for triangle in triangles:
+        material = triangle[0][3]
+        if material["emi"] == (0.0, 0.0, 0.0):
+            continue
+        a, b, c = (corner[0] for corner in triangle)
+        normal = cross(sub(b, a), sub(c, a))
+        area = length(normal)
+        if id(material) not in sums:
+            order.append(material)
+            sums[id(material)] = [0.0, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0)]
+        entry = sums[id(material)]
+        entry[0] += area
+        entry[1] = add(entry[1], times(add(add(a, b), c), area / 3.0))
+        entry[2] = add(entry[2], normal)
+    lights = []
+    for material in order:
+        area, weighted, normal = sums[id(material)]
+        if not area > 0.0:
+            continue
+        position = add((weighted[0] / area, weighted[1] / area, weighted[2] / area), times(normalize(normal), lift))
+        lights.append((position, tuple(clamp(c, 0.0, 1.0) for c in material["emi"])))
+    return lights
+
+
+def degenerate(positions, corners):
+    """Two corners at one position, or no area."""
+    corner_positions = [positions[p] for p, _n in corners]
+    return len({p for p, _n in corners}) < 3 or length(cross(sub(corner_positions[1], corner_positions[0]),
+                                                             sub(corner_positions[2], corner_positions[0]))) == 0.0
+
+
 def write_scene(out, model, settings, warn):
     """settings: up, crease, fit, fov, aspect, ground, rig, camera_pos, camera_target,
     camera_up, lights, ambient."""
@@ -730,9 +829,17 @@ def write_scene(out, model, settings, warn):
     normals = [turn_up(n, settings.up) for n in model.normals]
     # The fit, the floor and the rig are for the model without positions far beyond it.
     far = far_positions(model.positions)
-    placement = Placement([p for p, f in zip(positions, far) if not f], settings.fit, settings.fov, settings.aspect,
-                          settings.view)
     far_faces = [any(far[p] for p in face) for face in model.faces]  # the faces that use one, left out
+    kept = [p for p, f in zip(positions, far) if not f]
+    # A room (it encloses its centre) is seen from inside unless a view was asked for.
+    inside = False
+    if settings.fit and not settings.view_given:
+        corners = [tuple(p for p, _n in t[0]) for t in model.triangles if not far_faces[t[3]] and not degenerate(
+            positions, t[0])]
+        low = tuple(min(p[i] for p in kept) for i in range(3))
+        high = tuple(max(p[i] for p in kept) for i in range(3))
+        inside = encloses_its_centre(positions, corners, tuple((low[i] + high[i]) / 2.0 for i in range(3)))
+    placement = Placement(kept, settings.fit, settings.fov, settings.aspect, settings.view, inside)
     smooth = SmoothNormals(model, positions, settings.crease, far_faces)
     # The rig's camera: the one given, else a fitted model's own (Raytracer's modelCamera).
     camera = ((settings.camera_pos, settings.camera_target, settings.camera_up)
@@ -744,16 +851,14 @@ def write_scene(out, model, settings, warn):
         if far_faces[face]:
             far_triangles += 1
             continue
-        corner_positions = [positions[p] for p, _n in corners]
-        if len({p for p, _n in corners}) < 3 or length(cross(sub(corner_positions[1], corner_positions[0]),
-                                                             sub(corner_positions[2], corner_positions[0]))) == 0.0:
+        if degenerate(positions, corners):
             model.skipped += 1
             continue
         triangles.append([(placement.place(positions[p]),
                            apply_turn(placement.turn, normals[n] if n is not None else smooth.at(face, p)),
                            model.colors[p] if model.colors[p] is not None else material["dif"], material)
                           for p, n in corners])
-    if not settings.up_given:
+    if not settings.up_given and not placement.inside:  # a room is often longer than it is tall
         lying = lying_down([p for p, f in zip(model.positions, far) if not f])
         if lying:
             warn("%s: warning: %s" % (settings.obj, lying))
@@ -766,7 +871,9 @@ def write_scene(out, model, settings, warn):
         raise ConversionError(settings.obj, 0, "every one of the model's %d triangles is degenerate (two "
                               "corners at one position, or no area): nothing is left to render"
                               % len(model.triangles))
-    if settings.ground:
+    size = max(placement.high[i] - placement.low[i] for i in range(3))
+    lights = lights + emitter_lights(triangles, EMITTER_LIFT * size * placement.scale)
+    if settings.ground and not placement.inside:  # a room has a floor of its own
         floor, normal = ground(placement)
         triangles += [[(corner, normal, GROUND_MATERIAL["dif"], GROUND_MATERIAL) for corner in triangle]
                       for triangle in floor]
@@ -865,7 +972,7 @@ def main(argv=None):
     args.up_given, args.up = args.up is not None, args.up or "y"
     if args.view and not args.fit:
         parser.error("--view turns a model fitted with --fit")
-    args.view = args.view or "three-quarter"
+    args.view_given, args.view = args.view is not None, args.view or "three-quarter"
     if args.rig and args.light:
         parser.error("--rig places its own lights: give --rig or --light, not both")
     if not (0.0 < args.fov < 180.0) or args.width < 1 or args.height < 1:

@@ -92,7 +92,8 @@ std::string commandLine(const Options& options) {
     if (options.creaseDegrees != defaults.creaseDegrees)
         add("--crease", exact(options.creaseDegrees));
     addSwitch("--no-ground", !options.ground);
-    addChoice("--view", modelViewNames(), options.modelView, defaults.modelView);
+    if (options.viewGiven || options.modelView != defaults.modelView)
+        add("--view", choiceName(modelViewNames(), options.modelView));
     addSwitch("--no-fit", !options.fit);
     if (options.terminator) add("--terminator", *options.terminator ? "on" : "off");
 
@@ -157,6 +158,7 @@ std::string headlessCommand(const Options& options, const CameraPose& camera, in
     view.creaseDegrees = options.creaseDegrees;
     view.ground = options.ground;
     view.modelView = options.modelView;
+    view.viewGiven = options.viewGiven;
     view.fit = options.fit;
     view.terminator = options.terminator;
     return commandLine(view);

@@ -86,6 +86,7 @@ ObjSceneSetup objSceneSetup(const Options& options) {
     setup.creaseDegrees = options.creaseDegrees;
     setup.ground = options.ground;
     setup.view = options.modelView;
+    setup.insideWhenEnclosed = !options.viewGiven;
     setup.fit = options.fit;
     setup.fovDegrees = options.fovDegrees;
     setup.aspect = double(options.width) / double(options.height);
@@ -264,6 +265,7 @@ Options parseOptions(int argc, const char* const* argv) {
             noteModelOnly(given, arg);
         } else if (arg == "--view") {
             options.modelView = parseChoice(arg, value(), modelViewNames());
+            options.viewGiven = true;
             given.view = true;
             noteModelOnly(given, arg);
         } else if (arg == "--terminator") {

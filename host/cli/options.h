@@ -46,6 +46,7 @@ struct Options {
     double creaseDegrees = 60.0;
     bool ground = true;
     ModelView modelView = ModelView::ThreeQuarter;
+    bool viewGiven = false; // --view, even three-quarter: a room is then seen from outside too
     bool fit = true;
     // --terminator on|off: Hanika's shadow terminator fix; unset: on for OBJ models, off
     // for scene files (terminatorFixFor).

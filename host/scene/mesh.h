@@ -33,6 +33,9 @@ struct MeshMaterial {
     // The diffuse texture the model names (OBJ's map_Kd file name, as written, relative to
     // its MTL file); empty: none. Not sampled yet: the renderer shades with phong.diffuse.
     std::string diffuseTexture;
+    // MTL's Ke, negative parts 0: a model's emitting surfaces become point lights
+    // (scene/obj_scene.h). Zero: the material emits nothing.
+    glm::dvec3 emission{0.0};
 };
 
 struct Mesh {

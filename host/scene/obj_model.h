@@ -42,8 +42,8 @@ struct ObjModel {
     std::vector<MeshMaterial> materials;
     std::vector<std::string> warnings; // "file:line: warning: ..."
     // What the material libraries hold that the shading model does not render, for --check:
-    // "texture maps (map_Kd)", "emission (Ke)", "transparency (d, Tr)", "other maps (bump,
-    // map_Ks, ...)", each with the number of materials that have it.
+    // "texture maps (map_Kd)", "transparency (d, Tr)", "other maps (bump, map_Ks, ...)", each
+    // with the number of materials that have it.
     std::map<std::string, std::size_t> notRendered;
 };
 

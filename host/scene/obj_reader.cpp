@@ -170,8 +170,6 @@ void readMtl(const MtlFile& file, ObjModel& model, std::map<std::string, std::ui
         std::string what;
         if (keyword == "map_Kd")
             what = "texture maps (map_Kd)";
-        else if (keyword == "Ke" && (value(1) > 0.0 || value(2) > 0.0 || value(3) > 0.0))
-            what = "emission (Ke)";
         else if ((keyword == "d" && statement.words.size() > 1 && value(1) < 1.0) ||
                  (keyword == "Tr" && value(1) > 0.0))
             what = "transparency (d, Tr)";
@@ -198,6 +196,13 @@ void readMtl(const MtlFile& file, ObjModel& model, std::map<std::string, std::ui
                 model.materials.push_back(defaultObjMaterial());
                 names[currentName] = *current;
                 any = true;
+            } else if (keyword == "Ke") {
+                if (!current) place.fail("Ke before any newmtl");
+                std::vector<double> rgb = numbers(place, statement, 1, "Ke", 2);
+                if (rgb.size() == 2) place.fail("Ke expects 1 or 3 numbers, got 2");
+                if (rgb.size() == 1) rgb = {rgb[0], rgb[0], rgb[0]};
+                model.materials[*current].emission =
+                    glm::max(glm::dvec3(rgb[0], rgb[1], rgb[2]), glm::dvec3(0.0));
             } else if (keyword == "Kd" || keyword == "Ks") {
                 const std::string name(keyword);
                 if (!current) place.fail(name + " before any newmtl");
@@ -225,7 +230,7 @@ void readMtl(const MtlFile& file, ObjModel& model, std::map<std::string, std::ui
             } else if (keyword == "map_Kd" && current) {
                 model.materials[*current].diffuseTexture = textureFileName(statement);
             }
-            // Ka, Ke, d, Tr, Ni, other maps: nothing in this renderer's model uses them.
+            // Ka, d, Tr, Ni, other maps: nothing in this renderer's model uses them.
         } catch (const SceneError& error) {
             std::string consequence = "; the line is left out";
             if (current) {

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <optional>
 #include <span>
 #include <tuple>
@@ -206,6 +207,7 @@ struct Placement {
     glm::dvec3 offset{0.0};
     ViewTurn turn;
     glm::dvec3 low{0.0}, high{0.0}; // the box around the positions, unplaced (y up)
+    bool inside = false;            // a room seen from inside (insidePlacement)
 
     glm::dvec3 place(glm::dvec3 p) const { return turn.apply(p - centre) * scale + offset; }
 };
@@ -261,6 +263,69 @@ double fitDistance(const std::vector<glm::dvec3>& turned, double tanY, double ta
     return farthest;
 }
 
+std::pair<glm::dvec3, glm::dvec3> boxOf(const std::vector<glm::dvec3>& positions) {
+    glm::dvec3 low = positions[0], high = positions[0];
+    for (const glm::dvec3& p : positions) {
+        low = glm::min(low, p);
+        high = glm::max(high, p);
+    }
+    return {low, high};
+}
+
+// Whether the model encloses its box's centre as a room does: a ray from the centre in each
+// of the 26 directions towards the box's faces, edges and corners meets one of the
+// triangles, and at least 20 of those nearest triangles turn their front (their winding's
+// side) to the centre. A closed solid encloses its centre too, but its faces turn their
+// backs to it. The same arithmetic as tools/obj_to_scene.py's.
+bool enclosesItsCentre(const std::vector<glm::dvec3>& positions,
+                       const std::vector<glm::uvec3>& triangles, glm::dvec3 centre) {
+    int facing = 0, away = 0;
+    for (int i = -1; i <= 1; ++i)
+        for (int j = -1; j <= 1; ++j)
+            for (int k = -1; k <= 1; ++k) {
+                if (i == 0 && j == 0 && k == 0) continue;
+                const glm::dvec3 d = normalizedOrZero(glm::dvec3(i, j, k));
+                double nearest = std::numeric_limits<double>::infinity();
+                bool front = false;
+                for (const glm::uvec3& t : triangles) {
+                    const glm::dvec3 a = positions[t.x], e1 = positions[t.y] - a,
+                                     e2 = positions[t.z] - a;
+                    const glm::dvec3 p = glm::cross(d, e2);
+                    const double det = dot(e1, p);
+                    if (det == 0.0) continue;
+                    const glm::dvec3 s = centre - a;
+                    const double u = dot(s, p) / det;
+                    if (u < 0.0 || u > 1.0) continue;
+                    const glm::dvec3 q = glm::cross(s, e1);
+                    const double v = dot(d, q) / det;
+                    if (v < 0.0 || u + v > 1.0) continue;
+                    const double distance = dot(e2, q) / det;
+                    if (distance > 0.0 && distance < nearest) {
+                        nearest = distance;
+                        front = dot(glm::cross(e1, e2), d) < 0.0;
+                    }
+                }
+                if (nearest == std::numeric_limits<double>::infinity()) return false; // open
+                (front ? facing : away) += 1;
+                if (away > 6) return false; // a solid, or a room turned inside out
+            }
+    return facing >= 20;
+}
+
+// A room seen from inside: scaled as a fit is, unturned, the eye (the origin) standing
+// kInteriorEyeDepth of its depth in front of its centre.
+Placement insidePlacement(const std::vector<glm::dvec3>& positions) {
+    Placement placement;
+    std::tie(placement.low, placement.high) = boxOf(positions);
+    placement.centre = (placement.low + placement.high) / 2.0;
+    const glm::dvec3 extent = placement.high - placement.low;
+    const double size = std::max({extent.x, extent.y, extent.z});
+    placement.scale = size > 0.0 ? kFitSize / size : 1.0;
+    placement.offset = glm::dvec3(0.0, 0.0, -(kInteriorEyeDepth * extent.z) * placement.scale);
+    placement.inside = true;
+    return placement;
+}
+
 Placement placementOf(const std::vector<glm::dvec3>& positions, const ObjSceneSetup& setup) {
     glm::dvec3 low = positions[0], high = positions[0];
     for (const glm::dvec3& p : positions) {
@@ -292,8 +357,9 @@ double largestExtent(const Placement& placement) {
 
 // The rig hangs at the model's box's centre, placed, with half the box's diagonal, scaled.
 LightRigAnchor anchorOf(const Placement& placement) {
+    const double radius = length((placement.high - placement.low) * placement.scale) / 2.0;
     return {placement.place((placement.low + placement.high) / 2.0),
-            length((placement.high - placement.low) * placement.scale) / 2.0};
+            placement.inside ? radius * kInteriorRigShare : radius};
 }
 
 // The camera a fitted model is seen from when none is given: at the origin, looking at its
@@ -331,15 +397,6 @@ Mesh groundMesh(const Placement& placement) {
     return ground;
 }
 
-std::pair<glm::dvec3, glm::dvec3> boxOf(const std::vector<glm::dvec3>& positions) {
-    glm::dvec3 low = positions[0], high = positions[0];
-    for (const glm::dvec3& p : positions) {
-        low = glm::min(low, p);
-        high = glm::max(high, p);
-    }
-    return {low, high};
-}
-
 // Scene::model for a model placed as placement says, its mesh made.
 ModelPlacement placementFacts(const ObjModel& model, const std::vector<bool>& far,
                               const Placement& placement, const Mesh& mesh, bool fitted) {
@@ -369,6 +426,44 @@ std::optional<std::string> lyingDown(const ModelPlacement& model) {
     return "the model is longest along z and shallowest along y, as a z-up model "
            "(Blender, most CAD and scanning tools) lies on its back when read as y-up; if it is "
            "one, give --up z";
+}
+
+// A point light for each emitting material (MTL Ke), in the order the mesh's triangles first
+// use them: at the area-weighted centroid of its triangles, lifted by lift along the sum of
+// their (area-weighted) winding normals, the side its faces show, so that its own surface
+// does not shadow it; its colour Ke clamped to [0, 1]. An approximation of an area light in
+// the classic model of point lights: a closed emitter (a bulb), whose normals cancel, keeps
+// its light at its centre, inside it, and lights nothing outside.
+std::vector<Light> emitterLights(const Mesh& mesh, double lift) {
+    struct Sums {
+        double area = 0.0;
+        glm::dvec3 weighted{0.0}, normal{0.0};
+    };
+    std::vector<std::uint32_t> order;
+    std::map<std::uint32_t, Sums> sums;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const std::uint32_t material = mesh.triangleMaterials[t];
+        const glm::dvec3 emission = mesh.materials[material].emission;
+        if (emission == glm::dvec3(0.0)) continue;
+        const glm::uvec3 v = mesh.triangles[t];
+        const glm::dvec3 a = mesh.positions[v.x], b = mesh.positions[v.y], c = mesh.positions[v.z];
+        const glm::dvec3 cross = glm::cross(b - a, c - a);
+        const double area = length(cross);
+        auto [entry, added] = sums.try_emplace(material);
+        if (added) order.push_back(material);
+        entry->second.area += area;
+        entry->second.weighted += (a + b + c) * (area / 3.0);
+        entry->second.normal += cross;
+    }
+    std::vector<Light> lights;
+    for (const std::uint32_t material : order) {
+        const Sums& s = sums.at(material);
+        if (!(s.area > 0.0)) continue;
+        const glm::dvec3 position = s.weighted / s.area + normalizedOrZero(s.normal) * lift;
+        lights.push_back(
+            Light{position, glm::clamp(mesh.materials[material].emission, 0.0, 1.0), 0});
+    }
+    return lights;
 }
 
 // A model's corner as a mesh vertex: its position and its normal, bit for bit, so that
@@ -405,11 +500,13 @@ std::vector<Light> lightRig(const LightRigAnchor& anchor, const CameraPose& came
     const Place places[] = {{-2.0, 2.5, 2.5, 0.8}, {2.5, 0.5, 2.0, 0.3}, {0.5, 3.0, -3.0, 0.5}};
     const double radius = anchor.radius;
     std::vector<Light> lights;
+    lights.reserve(3 + anchor.emitters.size());
     for (const Place& p : places) {
         const glm::dvec3 offset =
             right * (radius * p.right) + up * (radius * p.up) + back * (radius * p.back);
         lights.push_back(Light{anchor.centre + offset, glm::dvec3(p.brightness), 0});
     }
+    lights.insert(lights.end(), anchor.emitters.begin(), anchor.emitters.end());
     return lights;
 }
 
@@ -437,21 +534,25 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
             for (const std::uint32_t p : facePositions(model, f))
                 farFaces[f] = farFaces[f] || far[p];
     }
-    const Placement placement = placementOf(anyFar ? near : positions, setup);
+    const std::vector<glm::dvec3>& kept = anyFar ? near : positions;
+    // A room (it encloses its centre) is seen from inside unless a view was asked for.
+    bool inside = false;
+    if (setup.fit && setup.insideWhenEnclosed) {
+        std::vector<glm::uvec3> corners;
+        for (const ObjTriangle& t : model.triangles)
+            if (!(anyFar && farFaces[t.face]) && !isDegenerate(positions, t))
+                corners.emplace_back(t.corners[0].position, t.corners[1].position,
+                                     t.corners[2].position);
+        const auto [low, high] = boxOf(kept);
+        inside = enclosesItsCentre(positions, corners, (low + high) / 2.0);
+    }
+    const Placement placement = inside ? insidePlacement(kept) : placementOf(kept, setup);
     auto place = [&](glm::dvec3 p) { return placement.place(p); };
     // Made when a corner first needs one: a model that gives every normal never pays for it.
     std::optional<SmoothNormals> smooth;
 
     Scene scene;
     scene.ambient = setup.ambient;
-    if (setup.lightRig) {
-        scene.lightRig = anchorOf(placement);
-        scene.lights =
-            lightRig(*scene.lightRig,
-                     setup.cameraGiven || !setup.fit ? setup.camera : modelCamera(placement));
-    } else {
-        scene.lights = {Light{glm::dvec3(0.0, 4.0, 0.0), glm::dvec3(1.0), 0}};
-    }
     scene.warnings = model.warnings;
     Mesh mesh;
     mesh.materials = model.materials;
@@ -505,14 +606,28 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
                          "every one of the model's " + std::to_string(model.triangles.size()) +
                              " triangles is degenerate (two corners at one position, or no area): "
                              "nothing is left to render");
+    // The rig (or one light above the camera), then the model's own emitters.
+    std::vector<Light> emitters =
+        emitterLights(mesh, kEmitterLift * largestExtent(placement) * placement.scale);
+    if (setup.lightRig) {
+        scene.lightRig = anchorOf(placement);
+        scene.lightRig->emitters = std::move(emitters);
+        scene.lights =
+            lightRig(*scene.lightRig,
+                     setup.cameraGiven || !setup.fit ? setup.camera : modelCamera(placement));
+    } else {
+        scene.lights = {Light{glm::dvec3(0.0, 4.0, 0.0), glm::dvec3(1.0), 0}};
+        scene.lights.insert(scene.lights.end(), emitters.begin(), emitters.end());
+    }
     scene.model = placementFacts(model, far, placement, mesh, setup.fit);
     scene.model->notRendered = model.notRendered;
-    if (!setup.upGiven) {
+    if (!setup.upGiven && !placement.inside) { // a room is often longer than it is tall
         if (std::optional<std::string> lying = lyingDown(*scene.model))
             scene.warnings.push_back(sceneLocation(fileName, 0) + "warning: " + *lying);
     }
     scene.meshes.push_back(std::move(mesh));
-    if (setup.ground) {
+    scene.model->inside = placement.inside;
+    if (setup.ground && !placement.inside) { // a room has a floor of its own
         scene.meshes.push_back(groundMesh(placement));
         const auto [low, high] = boxOf(scene.meshes.back().positions);
         scene.model->floor = true;

@@ -25,6 +25,9 @@ struct ObjSceneSetup {
     // aspect ratio); else the model stays where its file puts it.
     bool fit = true;
     ModelView view = ModelView::ThreeQuarter; // the side the fit shows (model_view.h)
+    // No view was asked for: a fitted model that encloses its centre (a room) is seen from
+    // inside (enclosesItsCentre, docs/models.md).
+    bool insideWhenEnclosed = true;
     double fovDegrees = 60.0;
     double aspect = 640.0 / 480.0;
     bool ground = true;   // a wide floor under the model, for its shadow
@@ -43,6 +46,15 @@ inline constexpr double kFrameShare = 0.8;
 // the plane of a face of it (a flat model on a coplanar floor is noise), close enough that
 // a model standing on it still seems to.
 inline constexpr double kFloorGap = 0.002;
+// Seen from inside, the eye stands this share of the room's depth in front of its centre
+// (towards +z), looking at the centre; the rig's lights hang at this share of their usual
+// distances, inside the room.
+inline constexpr double kInteriorEyeDepth = 0.4;
+inline constexpr double kInteriorRigShare = 0.15;
+
+// An emitting material's light sits this share of the model's largest extent off its
+// surface, on the side its faces show.
+inline constexpr double kEmitterLift = 0.01;
 
 // The key, fill and rim lights for a camera: at distances in units of the anchor's radius
 // from its centre along the camera's right, up and backward axes as seen from the camera

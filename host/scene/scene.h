@@ -47,6 +47,9 @@ struct Light {
 struct LightRigAnchor {
     glm::dvec3 centre{0.0};
     double radius = 0.0;
+    // The model's own lights (its emitting materials, MTL Ke), which stay where they are
+    // after the rig's three.
+    std::vector<Light> emitters;
 };
 
 // What an OBJ model became (scene/obj_scene.h), for --check, the default camera and the
@@ -57,6 +60,7 @@ struct ModelPlacement {
     glm::dvec3 centre{0.0};       // its box's centre, placed: what the default camera looks at
     glm::dvec3 up{0.0, 1.0, 0.0}; // its up axis, placed: the default camera's (--view)
     bool fitted = true;           // placed for the default camera (else where its file puts it)
+    bool inside = false;          // it encloses its centre: seen from inside, without a floor
     bool floor = false;           // a floor was added, with this box:
     glm::dvec3 floorLow{0.0}, floorHigh{0.0};
     // What its materials hold that is not rendered, with how many materials hold it

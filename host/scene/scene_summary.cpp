@@ -51,9 +51,11 @@ std::string sceneSummary(const Scene& scene) {
     if (const std::optional<ModelPlacement>& m = scene.model) {
         model = "model as read: " + triple(m->readLow) + " to " + triple(m->readHigh) + "\n" +
                 "model as placed: " + triple(m->placedLow) + " to " + triple(m->placedHigh) +
-                (m->fitted ? "" : " (--no-fit: as read, its up axis turned)") + "\n" + "floor: " +
+                (m->fitted ? "" : " (--no-fit: as read, its up axis turned)") +
+                (m->inside ? " (a room: seen from inside)" : "") + "\n" + "floor: " +
                 (m->floor ? triple(m->floorLow) + " to " + triple(m->floorHigh)
-                          : std::string("none (--no-ground)")) +
+                          : std::string(m->inside ? "none (a room has its own)"
+                                                  : "none (--no-ground)")) +
                 "\n";
         std::string unrendered;
         for (const auto& [what, holding] : m->notRendered)

@@ -13,6 +13,7 @@ stay where that run's camera put them.
     obj_models_test.py RAYTRACER TOOL OUTPUT_DIR REFERENCE_RENDER IMAGE_DIFF
 """
 
+import collections
 import math
 import os
 import shutil
@@ -88,6 +89,26 @@ ILLUM_MTL = ("newmtl glossy\nKd 0.7 0.2 0.1\nKs 0.8\nNs 40\nillum 2\n"
              "newmtl matte\nKd 0.7 0.2 0.1\nKs 0.8\nillum 1\nnewmtl broad\nKs 0.5\nNs 0\n")
 def illum_model(material):
     return "mtllib mats.mtl\nusemtl %s\n" % material + prism(8)
+
+
+# A box with a glowing top (MTL Ke): a light of its own, above the top's centre.
+MODELS["lamp"] = ("mtllib mats.mtl\nv -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\n"
+                  "v -1 1 1\nusemtl body\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 4 1 5 8\nusemtl glow\n"
+                  "f 4 8 7 3\n", "newmtl body\nKd 0.5 0.5 0.6\nnewmtl glow\nKd 1 1 1\nKe 2 1.5 0.5\n")
+
+def room_model():
+    """(OBJ, MTL) of a closed room 6 x 3 x 8 whose faces turn their fronts inwards, a blue box
+    on its floor and a lamp: an open quad under the ceiling, facing down, glowing (Ke)."""
+    walls, _ = box_model((3.0, 1.5, 4.0))
+    faces = [(3, 4, 2, 1), (6, 8, 7, 5), (2, 6, 5, 1), (7, 8, 4, 3), (5, 7, 3, 1), (4, 8, 6, 2)]  # inwards
+    box_vs, box_fs = box_model((0.4, 0.4, 0.4), (0.8, -1.1, -1.5), first=9)
+    lamp = ["v -0.6 1.45 -0.6", "v 0.6 1.45 -0.6", "v 0.6 1.45 0.6", "v -0.6 1.45 0.6"]
+    obj = "\n".join(["mtllib mats.mtl"] + walls + box_vs + lamp + ["usemtl walls"] +
+                    ["f %d %d %d %d" % f for f in faces] + ["usemtl box"] + box_fs +
+                    ["usemtl lamp", "f 17 18 19 20"]) + "\n"
+    mtl = ("newmtl walls\nKd 0.8 0.75 0.7\nnewmtl box\nKd 0.2 0.4 0.8\nKs 0.3\nNs 40\n"
+           "newmtl lamp\nKd 1 1 1\nKe 1 0.95 0.8\n")
+    return obj, mtl
 
 
 MODELS["illum"] = ("mtllib mats.mtl\nusemtl glossy\n" + prism(6) + "usemtl mirror\nf 1 3 5\nusemtl matte\n"
@@ -362,6 +383,22 @@ class NativeModels(unittest.TestCase):
         self.assertEqual(changed["glossy"], 0)
         self.assertGreater(changed["mirror"], 50)
 
+    def test_an_emitting_material_is_a_light_above_its_surface(self):
+        path = write_model("lamp_light", *MODELS["lamp"])
+        scene = path + ".scene"
+        self.assertEqual(run(RAYTRACER, path, "--save-scene", scene, "--view", "front").returncode, 0)
+        header, objects = scene_objects(scene)
+        lights = [lines for lines in objects if lines[0] == "light"]
+        self.assertEqual(len(lights), 4)
+        emitter = [float(v) for v in lights[3][1].split()[1:]]
+        self.assertEqual(lights[3][2], "col: 1 1 0.5")  # Ke 2 1.5 0.5 clamped to [0, 1]
+        positions = [c[0] for t in scene_triangles(scene)[:12] for c in t]
+        top = max(p[1] for p in positions)
+        centre = [(max(p[a] for p in positions) + min(p[a] for p in positions)) / 2 for a in range(3)]
+        self.assertAlmostEqual(emitter[0], centre[0], places=5)
+        self.assertAlmostEqual(emitter[2], centre[2], places=5)
+        self.assertAlmostEqual(emitter[1] - top, 0.01 * 1.5, places=5)  # lifted 1% of the fitted size
+
     def test_the_model_renders_as_its_saved_scene(self):
         path = write_model("render", CUBE)
         scene, direct, via_scene = path + ".scene", path + ".png", path + ".scene.png"
@@ -545,6 +582,9 @@ def box_model(half, centre=(0.0, 0.0, 0.0), first=1):
     return vs, ["f " + " ".join(str(first - 1 + i) for i in face) for face in faces]
 
 
+MODELS["room"] = room_model()  # after box_model, which it uses
+
+
 def corpus():
     """The framing corpus, made here: {name: OBJ text}."""
     models = {"flat_up": "v -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\nf 1 4 3 2\n",
@@ -652,8 +692,9 @@ class TheDefaultViewShowsTheModel(unittest.TestCase):
                            mtl)
         check = run(RAYTRACER, path, "--check")
         self.assertEqual(check.returncode, 0, check.stderr)
-        self.assertIn(b"\nnot rendered: emission (Ke) in 1 material; other maps (bump, map_Ks, ...) in 1 material; "
+        self.assertIn(b"\nnot rendered: other maps (bump, map_Ks, ...) in 1 material; "
                       b"texture maps (map_Kd) in 2 materials; transparency (d, Tr) in 1 material\n", check.stdout)
+        self.assertIn(b"\nlights: 4\n", check.stdout)  # the rig's three and the lamp's Ke
 
 
 def coarse_sphere(rings=6, sides=8):
@@ -674,6 +715,39 @@ def coarse_sphere(rings=6, sides=8):
     faces += ["f %d %d %d" % (2 + (rings - 2) * sides + j, 2 + (rings - 2) * sides + (j + 1) % sides, last)
               for j in range(sides)]
     return "\n".join(vs + faces) + "\n"
+
+
+class ARoomIsSeenFromInside(unittest.TestCase):
+    def test_a_closed_room_with_a_lamp_opens_inside_lit_and_varied(self):
+        path = write_model("room_inside", *room_model())
+        check = run(RAYTRACER, path, "--check")
+        self.assertEqual(check.returncode, 0, check.stderr)
+        lines = dict(line.split(": ", 1) for line in check.stdout.decode().splitlines()[1:])
+        self.assertTrue(lines["model as placed"].endswith("(a room: seen from inside)"), lines)
+        self.assertEqual(lines["floor"], "none (a room has its own)")
+        self.assertEqual(lines["lights"], "4")  # the rig's three inside, and the lamp
+        self.assertNotIn(b"give --up z", check.stderr)  # a room is often longer than tall
+        png = path + ".png"
+        drawn = run(RAYTRACER, path, "-o", png, "--validate", "--width", "160", "--height", "120")
+        self.assertEqual(drawn.returncode, 0, drawn.stderr)
+        _w, _h, rows = pixels(png)
+        values = [sum(p) / 3.0 for row in rows for p in row]
+        mean = sum(values) / len(values)
+        spread = math.sqrt(sum((v - mean) ** 2 for v in values) / len(values))
+        commonest = max(collections.Counter(p for row in rows for p in row).values()) / len(values)
+        print("room: mean %.1f, deviation %.1f, commonest colour %.1f%% of the pixels" % (mean, spread, 100 * commonest))
+        self.assertEqual(sum(1 for row in rows for p in row if p == (255, 255, 255)), 0)  # no sky: inside
+        self.assertGreater(mean, 60)  # lit, not the ambient grey (26) of lights outside the walls
+        self.assertGreater(spread, 10)
+        self.assertLess(commonest, 0.3)
+        reference = path + ".reference.png"
+        self.assertEqual(run(REFERENCE, path, "-o", reference, "--width", "160", "--height", "120").returncode, 0)
+        compared = run(IMAGE_DIFF, png, reference, "--tolerance", "2", "--min-match", "99.9")
+        self.assertEqual(compared.returncode, 0, compared.stdout + compared.stderr)
+        # Asked for a view, or a closed solid (its faces turned away from its centre): outside.
+        for options, model in ((["--view", "three-quarter"], path), ([], write_model("solid_cube", CUBE))):
+            check = run(RAYTRACER, model, "--check", *options)
+            self.assertNotIn(b"seen from inside", check.stdout)
 
 
 class TheShadowTerminator(unittest.TestCase):
