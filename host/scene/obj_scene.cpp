@@ -4,6 +4,9 @@
 #include "scene/obj_scene.h"
 
 #include "base/deduplicator.h"
+#include "scene/exact_vectors.h"
+#include "scene/far_vertices.h"
+#include "scene/model_lights.h"
 #include "scene/scene_error.h"
 
 #include <algorithm>
@@ -18,20 +21,9 @@
 
 namespace {
 
+using namespace exact_vectors;
+
 constexpr double kPi = 3.141592653589793;
-
-double length(glm::dvec3 v) {
-    return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
-}
-
-glm::dvec3 normalizedOrZero(glm::dvec3 v) {
-    const double n = length(v);
-    return n > 0.0 ? glm::dvec3(v.x / n, v.y / n, v.z / n) : glm::dvec3(0.0);
-}
-
-double dot(glm::dvec3 a, glm::dvec3 b) {
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
 
 // The up axis turned onto +y: swaps and negations only, so nothing is rounded.
 glm::dvec3 turnUp(glm::dvec3 v, UpAxis up) {
@@ -121,83 +113,6 @@ bool isDegenerate(const std::vector<glm::dvec3>& positions, const ObjTriangle& t
                         c = triangle.corners[2].position;
     if (a == b || b == c || a == c) return true;
     return length(glm::cross(positions[b] - positions[a], positions[c] - positions[a])) == 0.0;
-}
-
-// Positions far beyond the rest of the model, flagged: those further than kFarBeyond times
-// the model's spread from its median point along some axis. The median and the spread
-// (the largest, over the axes, of the median distance from the median coordinate) are
-// those of the file's positions, which a stray vertex or two cannot move; a vertex at 1e38
-// would otherwise set the fit, and the model shrink to a speck of rounding noise. A median
-// of an even count is the upper of the middle two. None is flagged when the spread is 0.
-constexpr double kFarBeyond = 1000.0;
-
-std::vector<bool> farPositions(const std::vector<glm::dvec3>& positions) {
-    const std::size_t count = positions.size(), middle = count / 2;
-    std::vector<bool> far(count, false);
-    if (count == 0) return far;
-    std::vector<double> values(count);
-    glm::dvec3 median(0.0);
-    double spread = 0.0;
-    for (int axis = 0; axis < 3; ++axis) {
-        for (std::size_t i = 0; i < count; ++i)
-            values[i] = positions[i][axis];
-        std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(middle), values.end());
-        median[axis] = values[middle];
-        for (std::size_t i = 0; i < count; ++i)
-            values[i] = std::abs(positions[i][axis] - median[axis]);
-        std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(middle), values.end());
-        spread = std::max(spread, values[middle]);
-    }
-    if (!(spread > 0.0)) return far;
-    for (std::size_t i = 0; i < count; ++i) {
-        const glm::dvec3 d = glm::abs(positions[i] - median);
-        far[i] = std::max({d.x, d.y, d.z}) > kFarBeyond * spread;
-    }
-    return far;
-}
-
-std::string shortNumber(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return text;
-}
-
-// What is said of positions flagged by farPositions: how many, the first one's place, the
-// triangles left out with them, and the model's extent without them (in the file's
-// coordinates). The first one's line goes with it.
-struct FarPositions {
-    std::int64_t line = 0;
-    std::string message;
-};
-
-FarPositions describeFar(const ObjModel& model, const std::vector<bool>& far,
-                         std::size_t trianglesLeftOut) {
-    std::size_t count = 0, first = 0;
-    glm::dvec3 low(0.0), high(0.0);
-    bool anyNear = false;
-    for (std::size_t i = 0; i < far.size(); ++i) {
-        if (far[i]) {
-            if (count++ == 0) first = i;
-        } else {
-            low = anyNear ? glm::min(low, model.positions[i]) : model.positions[i];
-            high = anyNear ? glm::max(high, model.positions[i]) : model.positions[i];
-            anyNear = true;
-        }
-    }
-    const glm::dvec3 p = model.positions[first];
-    std::string extent;
-    for (int axis = 0; axis < 3; ++axis)
-        extent += std::string(axis == 0 ? "" : ", ") + "xyz"[axis] + " " + shortNumber(low[axis]) +
-                  ".." + shortNumber(high[axis]);
-    return {model.positionLines[first],
-            std::to_string(count) +
-                " vertex(es) far beyond the rest of the model (the first here, at " +
-                shortNumber(p.x) + " " + shortNumber(p.y) + " " + shortNumber(p.z) +
-                ": more than " + shortNumber(kFarBeyond) +
-                " times the model's spread from its median) are left out, with the faces that "
-                "use them (" +
-                std::to_string(trianglesLeftOut) + " triangle(s)); without them the model spans " +
-                extent};
 }
 
 // Where the model goes: p -> turn(p - centre) * scale + offset, the turn being its view's.
@@ -428,44 +343,6 @@ std::optional<std::string> lyingDown(const ModelPlacement& model) {
            "one, give --up z";
 }
 
-// A point light for each emitting material (MTL Ke), in the order the mesh's triangles first
-// use them: at the area-weighted centroid of its triangles, lifted by lift along the sum of
-// their (area-weighted) winding normals, the side its faces show, so that its own surface
-// does not shadow it; its colour Ke clamped to [0, 1]. An approximation of an area light in
-// the classic model of point lights: a closed emitter (a bulb), whose normals cancel, keeps
-// its light at its centre, inside it, and lights nothing outside.
-std::vector<Light> emitterLights(const Mesh& mesh, double lift) {
-    struct Sums {
-        double area = 0.0;
-        glm::dvec3 weighted{0.0}, normal{0.0};
-    };
-    std::vector<std::uint32_t> order;
-    std::map<std::uint32_t, Sums> sums;
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-        const std::uint32_t material = mesh.triangleMaterials[t];
-        const glm::dvec3 emission = mesh.materials[material].emission;
-        if (emission == glm::dvec3(0.0)) continue;
-        const glm::uvec3 v = mesh.triangles[t];
-        const glm::dvec3 a = mesh.positions[v.x], b = mesh.positions[v.y], c = mesh.positions[v.z];
-        const glm::dvec3 cross = glm::cross(b - a, c - a);
-        const double area = length(cross);
-        auto [entry, added] = sums.try_emplace(material);
-        if (added) order.push_back(material);
-        entry->second.area += area;
-        entry->second.weighted += (a + b + c) * (area / 3.0);
-        entry->second.normal += cross;
-    }
-    std::vector<Light> lights;
-    for (const std::uint32_t material : order) {
-        const Sums& s = sums.at(material);
-        if (!(s.area > 0.0)) continue;
-        const glm::dvec3 position = s.weighted / s.area + normalizedOrZero(s.normal) * lift;
-        lights.push_back(
-            Light{position, glm::clamp(mesh.materials[material].emission, 0.0, 1.0), 0});
-    }
-    return lights;
-}
-
 // A model's corner as a mesh vertex: its position and its normal, bit for bit, so that
 // corners that agree on both share a vertex (and its colour, which goes with the position).
 struct CornerKey {
@@ -475,44 +352,6 @@ struct CornerKey {
 };
 
 } // namespace
-
-std::vector<Light> lightRig(const LightRigAnchor& anchor, const CameraPose& camera) {
-    // From the model towards the eye; an eye at the centre uses the camera's own backward axis.
-    glm::dvec3 back = normalizedOrZero(camera.position - anchor.centre);
-    if (back == glm::dvec3(0.0)) back = normalizedOrZero(camera.position - camera.target);
-    // Level with the camera's up (a model's up, for its own camera): the rig keeps its
-    // height above the model however far the camera looks down, so the sides it sees stay
-    // lit as the front view lights them. Seen from straight along up, back stays as it is.
-    const glm::dvec3 upAxis = normalizedOrZero(camera.up);
-    const glm::dvec3 level = normalizedOrZero(back - upAxis * dot(back, upAxis));
-    if (level != glm::dvec3(0.0)) back = level;
-    // Seen from straight along the camera's up, the camera's own right (then perpendicular
-    // to back) keeps the frame turning with the view.
-    glm::dvec3 right = normalizedOrZero(glm::cross(camera.up, back));
-    if (right == glm::dvec3(0.0))
-        right = normalizedOrZero(glm::cross(camera.target - camera.position, camera.up));
-    const glm::dvec3 up = glm::cross(back, right);
-    // For the default camera these are the unit axes, up to rounding where the fitted
-    // model's centre is a hair off the line of sight.
-    struct Place {
-        double right, up, back, brightness;
-    };
-    const Place places[] = {{-2.0, 2.5, 2.5, 0.8}, {2.5, 0.5, 2.0, 0.3}, {0.5, 3.0, -3.0, 0.5}};
-    const double radius = anchor.radius;
-    std::vector<Light> lights;
-    lights.reserve(3 + anchor.emitters.size());
-    for (const Place& p : places) {
-        const glm::dvec3 offset =
-            right * (radius * p.right) + up * (radius * p.up) + back * (radius * p.back);
-        lights.push_back(Light{anchor.centre + offset, glm::dvec3(p.brightness), 0});
-    }
-    lights.insert(lights.end(), anchor.emitters.begin(), anchor.emitters.end());
-    return lights;
-}
-
-void placeLightRig(Scene& scene, const CameraPose& camera) {
-    if (scene.lightRig) scene.lights = lightRig(*scene.lightRig, camera);
-}
 
 Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std::string& fileName) {
     std::vector<glm::dvec3> positions, normals;

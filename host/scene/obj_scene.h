@@ -4,6 +4,7 @@
 #pragma once
 
 #include "scene/camera.h"
+#include "scene/model_lights.h"
 #include "scene/model_view.h"
 #include "scene/obj_model.h"
 #include "scene/scene.h"
@@ -51,19 +52,6 @@ inline constexpr double kFloorGap = 0.002;
 // distances, inside the room.
 inline constexpr double kInteriorEyeDepth = 0.4;
 inline constexpr double kInteriorRigShare = 0.15;
-
-// An emitting material's light sits this share of the model's largest extent off its
-// surface, on the side its faces show.
-inline constexpr double kEmitterLift = 0.01;
-
-// The key, fill and rim lights for a camera: at distances in units of the anchor's radius
-// from its centre along the camera's right, up and backward axes as seen from the camera
-// looking at the centre (back: from the centre to the eye; right: perpendicular to back and
-// the camera's up), so every camera pose sees the model lit as the default camera does.
-std::vector<Light> lightRig(const LightRigAnchor& anchor, const CameraPose& camera);
-
-// Places a scene's rig (scene.lightRig) again for camera; a scene without one is left alone.
-void placeLightRig(Scene& scene, const CameraPose& camera);
 
 // Triangles with two corners at one position, or of no area, are left out, and counted in
 // a warning; fileName names the model in it.
