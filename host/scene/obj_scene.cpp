@@ -274,7 +274,8 @@ double largestExtent(const Placement& placement) {
 LightRigAnchor anchorOf(const Placement& placement) {
     const double radius = length((placement.high - placement.low) * placement.scale) / 2.0;
     return {placement.place((placement.low + placement.high) / 2.0),
-            placement.inside ? radius * kInteriorRigShare : radius};
+            placement.inside ? radius * kInteriorRigShare : radius,
+            {}};
 }
 
 // The camera a fitted model is seen from when none is given: at the origin, looking at its
