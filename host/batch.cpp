@@ -35,7 +35,7 @@ std::vector<FrameView> framesOf(const Options& options, const Scene& scene,
              options.turntableFrames, centre.x + 0.0, centre.y + 0.0, centre.z + 0.0, axis.x + 0.0,
              axis.y + 0.0, axis.z + 0.0); // + 0.0: no "-0"
         for (std::uint32_t k = 0; k < options.turntableFrames; ++k)
-            frames.push_back({k, turntableCamera(camera, centre, axis, k, options.turntableFrames),
+            frames.push_back({k, turntableFrameCamera(options, scene, camera, centre, axis, k),
                               options.fovDegrees});
     } else if (!path.empty()) {
         for (std::size_t k = 0; k < path.size(); ++k)

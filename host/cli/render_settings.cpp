@@ -3,6 +3,7 @@
 
 #include "gpu/image_limits.h"
 #include "gpu/pipeline_cache.h"
+#include "scene/model_fit.h"
 
 RenderSettings renderSettingsFrom(const Options& options) {
     RenderSettings settings;
@@ -30,15 +31,18 @@ void openHeadlessDevice(Context& context, const Options& options) {
     checkImageFits(imageLimitsOf(context), options.width, options.height, true);
 }
 
+bool seesModelWithItsCamera(const Options& options, const Scene& scene) {
+    return !options.cameraGiven && scene.model && scene.model->fitted;
+}
+
 CameraPose cameraFor(const Options& options, const Scene& scene) {
-    if (options.cameraGiven || !scene.model || !scene.model->fitted) return options.camera;
+    if (!seesModelWithItsCamera(options, scene)) return options.camera;
     return {glm::dvec3(0.0), scene.model->centre, scene.model->up};
 }
 
 glm::dvec3 turntableCentre(const Options& options, const Scene& scene, const CameraPose& camera) {
     if (options.orbitCenter) return *options.orbitCenter;
-    const bool modelCamera = !options.cameraGiven && scene.model && scene.model->fitted;
-    if (options.cameraTargetGiven || modelCamera) return camera.target;
+    if (options.cameraTargetGiven || seesModelWithItsCamera(options, scene)) return camera.target;
     return subjectBounds(scene, camera, options.fovDegrees,
                          double(options.width) / double(options.height))
         .centre;
@@ -47,6 +51,18 @@ glm::dvec3 turntableCentre(const Options& options, const Scene& scene, const Cam
 glm::dvec3 turntableAxis(const Scene& scene, const CameraPose& camera) {
     if (scene.model) return glm::normalize(camera.up);
     return floorAxis(scene, camera.up);
+}
+
+CameraPose turntableFrameCamera(const Options& options, const Scene& scene,
+                                const CameraPose& camera, glm::dvec3 centre, glm::dvec3 axis,
+                                std::uint32_t frame) {
+    const CameraPose turned = turntableCamera(camera, centre, axis, frame, options.turntableFrames);
+    const bool refit = frame > 0 && seesModelWithItsCamera(options, scene) &&
+                       !scene.model->inside && !options.orbitCenter && !scene.meshes.empty();
+    if (!refit) return turned;
+    // The model is the scene's first mesh (its floor, if any, the second).
+    return refitCamera(turned, scene.meshes.front().positions, options.fovDegrees,
+                       double(options.width) / double(options.height));
 }
 
 bool terminatorFixFor(const Options& options, const Scene& scene) {

@@ -16,6 +16,8 @@ RenderSettings renderSettingsFrom(const Options& options);
 // up as placed: the same image as the default camera's, and turntables and the window's
 // orbit turn about the model's up).
 CameraPose cameraFor(const Options& options, const Scene& scene);
+// Whether cameraFor gives a model's own camera: no --camera-* and a fitted model.
+bool seesModelWithItsCamera(const Options& options, const Scene& scene);
 
 // The point --turntable orbits: --orbit-center; else the camera's target where one is given
 // (or where cameraFor looks at a fitted model's centre); else the centre of what the camera
@@ -24,6 +26,13 @@ glm::dvec3 turntableCentre(const Options& options, const Scene& scene, const Cam
 // The axis it orbits about: a model's up (the camera's, for its own camera), else the
 // scene's floor's normal (floorAxis), else the camera's up.
 glm::dvec3 turntableAxis(const Scene& scene, const CameraPose& camera);
+// Frame `frame` of --turntable: turntableCamera about centre and axis; a model seen from its
+// own camera, from outside, about its own centre (no --orbit-center), is fitted again for
+// every frame but the first (refitCamera: the eye moves along its line of sight), so a long
+// model seen end-on fills the frame as it does side-on. Frame 0 is camera itself, bit for bit.
+CameraPose turntableFrameCamera(const Options& options, const Scene& scene,
+                                const CameraPose& camera, glm::dvec3 centre, glm::dvec3 axis,
+                                std::uint32_t frame);
 
 // Whether shadow rays use the shadow terminator fix: --terminator, else on for an OBJ model.
 bool terminatorFixFor(const Options& options, const Scene& scene);

@@ -139,6 +139,13 @@ struct Box {
     bool empty() const { return !(low.x <= high.x); }
 };
 
+// A triangle's size for telling objects from floors, walls and backdrops (kSubjectShare).
+double longestEdge(const Triangle& triangle) {
+    const glm::dvec3 a = triangle.vertices[0].position, b = triangle.vertices[1].position,
+                     c = triangle.vertices[2].position;
+    return std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+}
+
 } // namespace
 
 SceneBounds subjectBounds(const Scene& scene, const CameraPose& camera, double fovDegrees,
@@ -167,7 +174,7 @@ SceneBounds subjectBounds(const Scene& scene, const CameraPose& camera, double f
     forEachTriangle(scene, [&](const Triangle& triangle) {
         const glm::dvec3 a = triangle.vertices[0].position, b = triangle.vertices[1].position,
                          c = triangle.vertices[2].position;
-        if (std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)}) > large) return;
+        if (longestEdge(triangle) > large) return; // a floor, a wall or a backdrop
         const glm::dvec3 low = glm::min(a, glm::min(b, c)), high = glm::max(a, glm::max(b, c));
         small.add(low, high);
         if (inView(a) || inView(b) || inView(c)) seen.add(low, high);
@@ -210,7 +217,7 @@ glm::dvec3 floorAxis(const Scene& scene, glm::dvec3 up) {
     forEachTriangle(scene, [&](const Triangle& triangle) {
         const glm::dvec3 a = triangle.vertices[0].position, b = triangle.vertices[1].position,
                          c = triangle.vertices[2].position;
-        if (std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)}) <= large) return;
+        if (longestEdge(triangle) <= large) return; // an object, not a floor
         const glm::dvec3 normal = glm::cross(b - a, c - a);
         const double area = glm::length(normal);
         if (!(area > largest)) return;

@@ -6,6 +6,7 @@
 #include "base/deduplicator.h"
 #include "scene/exact_vectors.h"
 #include "scene/far_vertices.h"
+#include "scene/model_fit.h"
 #include "scene/model_lights.h"
 #include "scene/scene_error.h"
 
@@ -126,57 +127,6 @@ struct Placement {
 
     glm::dvec3 place(glm::dvec3 p) const { return turn.apply(p - centre) * scale + offset; }
 };
-
-// The distance straight ahead of the default camera at which the outermost of the turned
-// positions lies `share` of the way from the centre of the view to its edge:
-// y / (distance - z) = share * tanY, and x the same with tanX.
-double distanceForShare(const std::vector<glm::dvec3>& turned, double tanY, double tanX,
-                        double share) {
-    const double vertical = share * tanY, horizontal = share * tanX;
-    double distance = 0.0;
-    for (const glm::dvec3& v : turned)
-        distance = std::max(distance,
-                            v.z + std::max(std::abs(v.y) / vertical, std::abs(v.x) / horizontal));
-    return distance;
-}
-
-// Half the larger of the silhouette's width and height as shares of the frame's, the model's
-// centre at distance straight ahead; infinite when a position is not in front of the eye.
-double halfSpan(const std::vector<glm::dvec3>& turned, double tanY, double tanX, double distance) {
-    double left = 0.0, right = 0.0, bottom = 0.0, top = 0.0;
-    for (const glm::dvec3& v : turned) {
-        const double depth = distance - v.z;
-        if (!(depth > 0.0)) return std::numeric_limits<double>::infinity();
-        const double x = v.x / (depth * tanX), y = v.y / (depth * tanY);
-        left = std::min(left, x);
-        right = std::max(right, x);
-        bottom = std::min(bottom, y);
-        top = std::max(top, y);
-    }
-    return std::max(right - left, top - bottom) / 2.0;
-}
-
-// How far straight ahead the fitted model goes: where its silhouette spans kFrameShare of
-// the frame's width or height (the larger share), found by bisection, but no nearer than
-// where its outermost position lies kFrameLimit of the way to the frame's edge. A model
-// seen face on is symmetric, so its outermost positions decide (80% of the frame); one seen
-// along its length has a near end larger than its far end, and comes nearer, up to the
-// limit, until the span is 80%.
-constexpr double kFrameLimit = 0.95;
-constexpr int kFitSteps = 40;
-double fitDistance(const std::vector<glm::dvec3>& turned, double tanY, double tanX) {
-    double nearest = distanceForShare(turned, tanY, tanX, kFrameLimit);
-    double farthest = distanceForShare(turned, tanY, tanX, kFrameShare); // spans <= the share
-    if (halfSpan(turned, tanY, tanX, nearest) <= kFrameShare) return nearest;
-    for (int step = 0; step < kFitSteps; ++step) {
-        const double middle = (nearest + farthest) / 2.0;
-        if (halfSpan(turned, tanY, tanX, middle) > kFrameShare)
-            nearest = middle;
-        else
-            farthest = middle;
-    }
-    return farthest;
-}
 
 std::pair<glm::dvec3, glm::dvec3> boxOf(const std::vector<glm::dvec3>& positions) {
     glm::dvec3 low = positions[0], high = positions[0];

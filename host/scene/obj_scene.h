@@ -22,8 +22,8 @@ struct ObjSceneSetup {
     // most this many degrees apart (0: flat faces; 180: smooth everywhere).
     double creaseDegrees = 60.0;
     // Scale the model to kFitSize across and put it straight ahead of the default camera,
-    // as far away as makes it fill kFrameShare of the view (of this field of view and
-    // aspect ratio); else the model stays where its file puts it.
+    // as far away as makes it fill kFrameShare (model_fit.h) of the view (of this field of
+    // view and aspect ratio); else the model stays where its file puts it.
     bool fit = true;
     ModelView view = ModelView::ThreeQuarter; // the side the fit shows (model_view.h)
     // No view was asked for: a fitted model that encloses its centre (a room) is seen from
@@ -42,7 +42,6 @@ struct ObjSceneSetup {
 };
 
 inline constexpr double kFitSize = 1.5;
-inline constexpr double kFrameShare = 0.8;
 // The floor sits this share of the model's largest extent below its lowest point: never in
 // the plane of a face of it (a flat model on a coplanar floor is noise), close enough that
 // a model standing on it still seems to.

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # The overlay (H, --overlay) under Xvfb: shown, it is on the window (the window's pixels
 # differ from headless) but never in P's screenshot (equal to headless --spp N, tolerance
-# 0); hidden with H, the window shows the headless pixels exactly; shown again, a real
-# click on its "grid" sampler button re-specialises the kernel, and the next refined P
-# screenshot equals headless --sampler grid; a resize with it shown refines again; Q quits
-# with status 0 and the validation layer stays silent throughout.
+# 0), and it covers at most 15% of a 640x480 view; hidden with H, the window shows the
+# headless pixels exactly; shown again, a real click on its "grid" sampler button
+# re-specialises the kernel, and the next refined P screenshot equals headless --sampler
+# grid; a resize with it shown refines again; Q quits with status 0 and the validation
+# layer stays silent throughout.
 #
 # usage: window_overlay_test.sh RAYTRACER SCENE OUTPUT_DIR IMAGE_DIFF
 set -euo pipefail
@@ -16,6 +17,29 @@ readonly WIDTH=320 HEIGHT=240 SPP=4
 # lines of figures and a separator, after the "sampler" label (window coordinates).
 # The folded "kernel" section's header, and the "grid" sampler button once it is unfolded.
 readonly KERNEL_X=60 KERNEL_Y=59 GRID_X=90 GRID_Y=82
+
+# The folded overlay's panel covers at most this share (%) of a 640x480 view: its size in
+# pixels does not depend on the window's.
+readonly MAX_SHARE=15
+TOOLS_LIB=$(cd "$(dirname "${BASH_SOURCE[0]}")/../../tools/lib" && pwd)
+readonly TOOLS_LIB
+
+# "W H": the box around the pixels of SHOWN.PNG that differ from HEADLESS.PNG (the panel).
+overlay_box() { # HEADLESS.PNG SHOWN.PNG
+    python3 - "$1" "$2" "$TOOLS_LIB" <<'EOF'
+import sys
+sys.path.insert(0, sys.argv[3])
+from png_read import read_png
+_w, _h, plain = read_png(sys.argv[1])
+width, height, shown = read_png(sys.argv[2])
+differ = [(x, y) for y in range(min(height, len(plain))) for x in range(min(width, len(plain[0])))
+          if shown[y][x][:3] != plain[y][x][:3]]
+if not differ:
+    sys.exit(1)
+xs, ys = [x for x, _y in differ], [y for _x, y in differ]
+print(max(xs) - min(xs) + 1, max(ys) - min(ys) + 1)
+EOF
+}
 
 # The path of the COUNTth screenshot that LOG reports.
 screenshot_path() { # LOG COUNT
@@ -59,6 +83,13 @@ run_inside_xvfb() {
         fail "--overlay: the window shows no overlay (it equals the headless render)"
     else
         pass "--overlay: the overlay is on the window ($(cat shown-window-diff.txt | head -c 200))"
+    fi
+    local box box_w box_h
+    if box=$(overlay_box r2.png shown-window.png) && read -r box_w box_h <<< "$box" &&
+        ((box_w * box_h * 100 <= MAX_SHARE * 640 * 480)); then
+        pass "the folded overlay is ${box_w}x$box_h pixels: at most $MAX_SHARE% of a 640x480 view"
+    else
+        fail "the folded overlay covers ${box:-nothing measurable}: more than $MAX_SHARE% of a 640x480 view"
     fi
     p_matches "$pid" "$id" "$log" 1 r2.png "overlay shown"
 
