@@ -2,7 +2,7 @@
 
 #include "base/output_format.h"
 #include "cli/output_pattern.h"
-#include "scene/obj_reader.h"
+#include "scene/file_format.h"
 
 #include <filesystem>
 #include <string>
@@ -10,17 +10,17 @@
 
 namespace {
 
-// Options that shape an OBJ model (docs/models.md) given with scene files alone: they would
+// Options that shape a model (docs/models.md) given with scene files alone: they would
 // change nothing, so the command line is not what its writer meant.
 void checkModelOptions(const Options& options, const std::vector<std::string>& modelOnly) {
     if (modelOnly.empty() || options.scenePath.empty()) return;
-    if (isObjPath(options.scenePath)) return;
+    if (isModelPath(options.scenePath)) return;
     for (const std::filesystem::path& scene : options.moreScenes)
-        if (isObjPath(scene)) return;
+        if (isModelPath(scene)) return;
     std::string flags;
     for (std::size_t i = 0; i < modelOnly.size(); ++i)
         flags += (i == 0 ? "" : i + 1 == modelOnly.size() ? " and " : ", ") + modelOnly[i];
-    throw UsageError(flags + " shape" + (modelOnly.size() == 1 ? "s" : "") + " an OBJ model, and " +
+    throw UsageError(flags + " shape" + (modelOnly.size() == 1 ? "s" : "") + " a model, and " +
                      options.scenePath.string() +
                      " is a scene file, whose own triangles, lights and camera are used as "
                      "they are");

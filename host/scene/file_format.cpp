@@ -1,5 +1,7 @@
 #include "scene/file_format.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <cstring>
 
@@ -33,6 +35,13 @@ bool isBinaryStl(std::string_view text) {
     return 84 + 50 * std::uint64_t(triangles) == text.size();
 }
 
+std::string lowerExtension(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
+}
+
 } // namespace
 
 std::optional<OtherFormat> otherFileFormat(std::string_view text) {
@@ -43,9 +52,10 @@ std::optional<OtherFormat> otherFileFormat(std::string_view text) {
     const std::string_view head = text.substr(0, 1024);
     if (startsWith(text, "solid") && head.find("facet") != std::string_view::npos)
         return OtherFormat::Stl;
-    const std::size_t first = head.find_first_not_of(" \t\r\n");
+    // JSON holding an "asset" key anywhere (exporters put it first or last).
+    const std::size_t first = head.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
     if (first != std::string_view::npos && head[first] == '{' &&
-        head.find("\"asset\"") != std::string_view::npos)
+        text.find("\"asset\"") != std::string_view::npos)
         return OtherFormat::Gltf;
     return std::nullopt;
 }
@@ -77,4 +87,27 @@ std::string otherFormatMessage(OtherFormat format, const std::string& fileName,
     return "not " + readAs + ": this is " + formatName(format) +
            ", which is not read; convert it to OBJ first (for example with assimp export, "
            "Debian's assimp-utils)";
+}
+
+bool isObjPath(const std::filesystem::path& path) {
+    return lowerExtension(path) == ".obj";
+}
+
+bool isPlyPath(const std::filesystem::path& path) {
+    return lowerExtension(path) == ".ply";
+}
+
+bool isStlPath(const std::filesystem::path& path) {
+    return lowerExtension(path) == ".stl";
+}
+
+bool isAssimpPath(const std::filesystem::path& path) {
+    const std::string extension = lowerExtension(path);
+    for (const char* known : {".gltf", ".glb", ".fbx", ".dae", ".3ds", ".off"})
+        if (extension == known) return true;
+    return false;
+}
+
+bool isModelPath(const std::filesystem::path& path) {
+    return isObjPath(path) || isPlyPath(path) || isStlPath(path) || isAssimpPath(path);
 }

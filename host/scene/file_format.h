@@ -3,6 +3,7 @@
 // rather than calling it binary or reporting that no faces were found.
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -21,3 +22,16 @@ enum class ExpectedFile { Scene, ObjModel };
 // The error's message for a file of that format: what it is, and what to do about it.
 std::string otherFormatMessage(OtherFormat format, const std::string& fileName,
                                ExpectedFile expected);
+
+// Whether a path names an OBJ model: its extension, .obj in any case.
+bool isObjPath(const std::filesystem::path& path);
+// Whether a path names a PLY model: .ply in any case.
+bool isPlyPath(const std::filesystem::path& path);
+// Whether a path names an STL model: .stl in any case.
+bool isStlPath(const std::filesystem::path& path);
+// Whether a path names a model that assimp reads (assimp_model.h) by its extension, in any
+// case: .gltf, .glb (which otherFileFormat also tells by their bytes), .fbx, .dae, .3ds
+// and .off.
+bool isAssimpPath(const std::filesystem::path& path);
+// Any of those: a model rather than a scene file, by its name.
+bool isModelPath(const std::filesystem::path& path);

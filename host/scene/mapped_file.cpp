@@ -14,7 +14,12 @@ MappedFile::MappedFile(const std::string& name) {
     if (descriptor_ < 0)
         throw SceneError(name, 0, std::string("cannot open file: ") + std::strerror(errno));
     struct stat info {};
-    if (::fstat(descriptor_, &info) == 0 && S_ISREG(info.st_mode) && info.st_size >= kMapMinimum) {
+    if (::fstat(descriptor_, &info) == 0 && (S_ISCHR(info.st_mode) || S_ISBLK(info.st_mode))) {
+        ::close(descriptor_);
+        descriptor_ = -1;
+        throw SceneError(name, 0, "a device, not a file: it would be read without end");
+    }
+    if (S_ISREG(info.st_mode) && info.st_size >= kMapMinimum) {
         void* mapped = ::mmap(nullptr, std::size_t(info.st_size), PROT_READ,
                               MAP_PRIVATE | MAP_POPULATE, descriptor_, 0);
         if (mapped != MAP_FAILED) {

@@ -11,7 +11,8 @@
 // raises SIGBUS; scene files are written whole and then read, so this is accepted.)
 class MappedFile {
   public:
-    // Throws SceneError ("cannot open file: ...", "cannot read file: ...").
+    // Throws SceneError ("cannot open file: ...", "cannot read file: ...", or for a device
+    // such as /dev/zero, which would never end).
     explicit MappedFile(const std::string& name);
     ~MappedFile();
     MappedFile(const MappedFile&) = delete;

@@ -409,14 +409,11 @@ ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlL
     return model;
 }
 
-ObjModel readObjFile(const std::filesystem::path& path) {
+ObjModel readObjFile(const std::filesystem::path& path, std::string_view text) {
     const std::string name = path.string();
     std::error_code error;
-    if (std::filesystem::is_directory(path, error))
-        throw SceneError(name, 0, "cannot open file: Is a directory");
-    const MappedFile file(name);
     const std::string folder = directoryOf(name);
-    return parseObj(file.text(), name, [&](const std::string& library) {
+    return parseObj(text, name, [&](const std::string& library) {
         MtlFile mtl{folder.empty() ? library : (std::filesystem::path(folder) / library).string(),
                     std::nullopt};
         if (!std::filesystem::exists(mtl.path, error)) return mtl;
@@ -432,25 +429,8 @@ ObjModel readObjFile(const std::filesystem::path& path) {
                              "the file holds " + std::to_string(size) +
                                  " bytes, more than a material library may (" +
                                  std::to_string(kMaxMtlBytes >> 20) + " MiB)");
-        const MappedFile text(mtl.path); // an unreadable library is an error, as the OBJ is
-        mtl.text = std::string(text.text());
+        const MappedFile mtlFile(mtl.path); // an unreadable library is an error, as the OBJ is
+        mtl.text = std::string(mtlFile.text());
         return mtl;
     });
-}
-
-namespace {
-std::string lowerExtension(const std::filesystem::path& path) {
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return extension;
-}
-} // namespace
-
-bool isObjPath(const std::filesystem::path& path) {
-    return lowerExtension(path) == ".obj";
-}
-
-bool isPlyPath(const std::filesystem::path& path) {
-    return lowerExtension(path) == ".ply";
 }

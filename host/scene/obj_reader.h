@@ -26,11 +26,6 @@ using MtlLookup = std::function<MtlFile(const std::string& name)>;
 // fileName is used in messages; lookUpMtl finds the libraries that mtllib names.
 ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlLookup& lookUpMtl);
 
-// Reads path and the libraries beside it that it names.
-ObjModel readObjFile(const std::filesystem::path& path);
-
-// Whether a path names an OBJ model rather than a scene file: its extension, in any case.
-bool isObjPath(const std::filesystem::path& path);
-
-// Whether a path names a PLY model (which is not read: loadScene says so).
-bool isPlyPath(const std::filesystem::path& path);
+// The model in text, the file at path (whose name is used in messages), with the
+// libraries beside it that it names.
+ObjModel readObjFile(const std::filesystem::path& path, std::string_view text);

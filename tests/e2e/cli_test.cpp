@@ -130,10 +130,10 @@ TEST(CommandLine, MeaninglessCombinationsSayWhatWasMeant) {
     const std::string scene = writeScene(dir, minimalScene()).string();
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
         {{scene, "--up", "z", "-o", "a.png"},
-         "error: --up shapes an OBJ model, and " + scene +
+         "error: --up shapes a model, and " + scene +
              " is a scene file, whose own triangles, lights and camera are used as they are\n"},
         {{scene, "--no-ground", "--crease", "0", "--no-ground"},
-         "error: --no-ground and --crease shape an OBJ model, and " + scene +
+         "error: --no-ground and --crease shape a model, and " + scene +
              " is a scene file, whose own triangles, lights and camera are used as they are\n"},
         {{scene, "out.png"},
          "error: 'out.png' is no file: each argument without an option is a "

@@ -16,6 +16,7 @@ packages=(
     libglfw3-dev libglm-dev libstb-dev
     libimgui-dev              # the window's overlay (Dear ImGui with its GLFW and Vulkan backends)
     libtinyexr-dev            # -o out.exr and image_diff's EXR input
+    libassimp-dev             # models other than OBJ: PLY, STL, glTF and GLB, FBX, COLLADA, 3DS
     libjpeg-dev               # compare: JPEG decoded, and re-encoded as the image was (libjpeg-turbo)
     googletest libgtest-dev
     xvfb xauth x11-utils x11-apps xdotool

@@ -1,0 +1,229 @@
+#include "scene/assimp_model.h"
+
+#include "scene/contained_reader.h"
+#include "scene/model_file_checks.h"
+#include "scene/polygon_triangulation.h"
+#include "scene/scene_error.h"
+
+#include <assimp/DefaultIOSystem.h>
+#include <assimp/Importer.hpp>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <unordered_map>
+
+namespace {
+
+// A Phong material from an assimp one (docs/models.md): kd the base or diffuse colour; a
+// metallic-roughness material (glTF) a highlight of the dielectric 0.04 blended towards the
+// base colour by metallic, faded by roughness, its exponent 2 / roughness^4 - 2; another a
+// specular colour and exponent as given; exponents clamped as MTL's Ns; no mirror.
+MeshMaterial materialFrom(const aiMaterial& source, std::map<std::string, std::size_t>& counted) {
+    MeshMaterial material = defaultObjMaterial();
+    aiColor4D colour;
+    if (source.Get(AI_MATKEY_BASE_COLOR, colour) == AI_SUCCESS ||
+        source.Get(AI_MATKEY_COLOR_DIFFUSE, colour) == AI_SUCCESS)
+        material.phong.diffuse = glm::clamp(glm::dvec3(colour.r, colour.g, colour.b), 0.0, 1.0);
+    ai_real metallic = 0, roughness = 1, shininess = 0;
+    if (source.Get(AI_MATKEY_METALLIC_FACTOR, metallic) == AI_SUCCESS) {
+        source.Get(AI_MATKEY_ROUGHNESS_FACTOR, roughness);
+        const double m = std::clamp(double(metallic), 0.0, 1.0),
+                     r = std::clamp(double(roughness), 0.01, 1.0);
+        material.phong.specular =
+            (glm::dvec3(0.04) * (1.0 - m) + material.phong.diffuse * m) * (1.0 - r);
+        material.phong.shininess = 2.0 / (r * r * r * r) - 2.0;
+    } else {
+        aiColor3D specular;
+        if (source.Get(AI_MATKEY_COLOR_SPECULAR, specular) == AI_SUCCESS)
+            material.phong.specular =
+                glm::clamp(glm::dvec3(specular.r, specular.g, specular.b), 0.0, 1.0);
+        if (source.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS)
+            material.phong.shininess = shininess;
+    }
+    material.phong.shininess =
+        std::clamp(material.phong.shininess, kMinObjShininess, kMaxObjShininess);
+    material.phong.mirror = 0.0;
+    aiColor3D emissive;
+    if (source.Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == AI_SUCCESS)
+        material.emission = glm::max(glm::dvec3(emissive.r, emissive.g, emissive.b), 0.0);
+    aiString texture;
+    if (source.GetTexture(aiTextureType_BASE_COLOR, 0, &texture) == AI_SUCCESS ||
+        source.GetTexture(aiTextureType_DIFFUSE, 0, &texture) == AI_SUCCESS) {
+        material.diffuseTexture = texture.C_Str();
+        ++counted["texture maps (diffuse, base colour)"];
+    }
+    // A value that is not finite (a damaged file) falls back to the default material's.
+    const MeshMaterial fallback = defaultObjMaterial();
+    auto finite = [](glm::dvec3 v) {
+        return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+    };
+    if (!finite(material.phong.diffuse)) material.phong.diffuse = fallback.phong.diffuse;
+    if (!finite(material.phong.specular)) material.phong.specular = fallback.phong.specular;
+    if (!std::isfinite(material.phong.shininess))
+        material.phong.shininess = fallback.phong.shininess;
+    if (!finite(material.emission)) material.emission = fallback.emission;
+    ai_real opacity = 1;
+    if (source.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity < 1)
+        ++counted["transparency"];
+    for (const aiTextureType other :
+         {aiTextureType_NORMALS, aiTextureType_HEIGHT, aiTextureType_METALNESS,
+          aiTextureType_DIFFUSE_ROUGHNESS, aiTextureType_EMISSIVE, aiTextureType_SPECULAR}) {
+        if (source.GetTextureCount(other) > 0) {
+            ++counted["other maps (normal, metallic-roughness, ...)"];
+            break;
+        }
+    }
+    return material;
+}
+
+// The files a model names (a glTF's buffers) are opened only when they are regular files:
+// a device (/dev/zero) would be read without end.
+class RegularFilesOnly : public Assimp::DefaultIOSystem {
+  public:
+    Assimp::IOStream* Open(const char* file, const char* mode) override {
+        std::error_code error;
+        if (!std::filesystem::is_regular_file(file, error)) return nullptr;
+        return DefaultIOSystem::Open(file, mode);
+    }
+};
+
+// A corner's identity for sharing a position: its coordinates' and colour's bits.
+struct PositionKey {
+    std::array<std::uint32_t, 7> bits{};
+    bool operator==(const PositionKey&) const = default;
+};
+struct PositionKeyHash {
+    std::size_t operator()(const PositionKey& key) const {
+        std::uint64_t hash = 1469598103934665603ull;
+        for (const std::uint32_t b : key.bits)
+            hash = (hash ^ b) * 1099511628211ull;
+        return static_cast<std::size_t>(hash);
+    }
+};
+
+} // namespace
+
+namespace {
+
+ObjModel readInThisProcess(std::string_view bytes, const std::filesystem::path& path,
+                           std::optional<OtherFormat> format) {
+    const std::string name = path.string();
+    Assimp::Importer importer;
+    importer.SetIOHandler(new RegularFilesOnly); // the importer owns it
+    // Points and lines are dropped; meshes are put where their nodes' transforms place them.
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                                aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    const unsigned flags =
+        aiProcess_ValidateDataStructure | aiProcess_PreTransformVertices | aiProcess_SortByPType;
+    const char* hint = format == OtherFormat::BinaryGltf ? "glb" : nullptr;
+    // Self-contained formats are read from the bytes already mapped; others (a .gltf with
+    // its buffers and images beside it, FBX, COLLADA) from the path.
+    const aiScene* scene =
+        hint ? importer.ReadFileFromMemory(bytes.data(), bytes.size(), flags, hint)
+             : importer.ReadFile(name, flags);
+    if (!scene || !scene->mRootNode)
+        throw SceneError(name, 0,
+                         std::string("cannot read the model: ") + importer.GetErrorString());
+
+    ObjModel model;
+    // Material i of the file is model material i + 1 (0 is the default one).
+    model.materials.push_back(defaultObjMaterial());
+    for (unsigned i = 0; i < scene->mNumMaterials; ++i)
+        model.materials.push_back(materialFrom(*scene->mMaterials[i], model.notRendered));
+    std::unordered_map<PositionKey, std::uint32_t, PositionKeyHash> positionOf;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        const aiMesh& mesh = *scene->mMeshes[m];
+        std::vector<std::uint32_t> position(mesh.mNumVertices);
+        const bool colours = mesh.HasVertexColors(0);
+        for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+            const aiVector3D& p = mesh.mVertices[v];
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+                throw SceneError(name, 0,
+                                 "vertex " + std::to_string(v + 1) + " of mesh " +
+                                     std::to_string(m + 1) + " is not a finite position");
+            PositionKey key;
+            key.bits = {std::bit_cast<std::uint32_t>(p.x),
+                        std::bit_cast<std::uint32_t>(p.y),
+                        std::bit_cast<std::uint32_t>(p.z),
+                        0,
+                        0,
+                        0,
+                        colours ? 1u : 0u};
+            std::optional<glm::dvec3> colour;
+            if (colours) {
+                const aiColor4D& c = mesh.mColors[0][v];
+                if (std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b))
+                    colour = glm::clamp(glm::dvec3(c.r, c.g, c.b), 0.0, 1.0);
+                key.bits[3] = std::bit_cast<std::uint32_t>(c.r);
+                key.bits[4] = std::bit_cast<std::uint32_t>(c.g);
+                key.bits[5] = std::bit_cast<std::uint32_t>(c.b);
+            }
+            const auto [found, added] =
+                positionOf.try_emplace(key, static_cast<std::uint32_t>(model.positions.size()));
+            if (added) {
+                model.positions.emplace_back(p.x, p.y, p.z);
+                model.positionLines.push_back(0);
+                model.colors.push_back(colour);
+            }
+            position[v] = found->second;
+        }
+        const std::uint32_t normalBase = static_cast<std::uint32_t>(model.normals.size());
+        // Normals as given, unless one is not finite: then the crease rule's for the mesh.
+        bool normals = mesh.HasNormals();
+        for (unsigned v = 0; normals && v < mesh.mNumVertices; ++v)
+            normals = std::isfinite(mesh.mNormals[v].x) && std::isfinite(mesh.mNormals[v].y) &&
+                      std::isfinite(mesh.mNormals[v].z);
+        if (normals)
+            for (unsigned v = 0; v < mesh.mNumVertices; ++v)
+                model.normals.emplace_back(mesh.mNormals[v].x, mesh.mNormals[v].y,
+                                           mesh.mNormals[v].z);
+        const std::uint32_t material = mesh.mMaterialIndex + 1;
+        for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+            const aiFace& face = mesh.mFaces[f];
+            if (face.mNumIndices < 3) continue;
+            std::vector<ObjCorner> corners;
+            std::vector<glm::dvec3> points;
+            for (unsigned k = 0; k < face.mNumIndices; ++k) {
+                const unsigned v = face.mIndices[k];
+                ObjCorner corner;
+                corner.position = position[v];
+                if (normals) corner.normal = normalBase + v;
+                corners.push_back(corner);
+                points.push_back(model.positions[corner.position]);
+                model.facePositions.push_back(corner.position);
+            }
+            model.faceStarts.push_back(model.facePositions.size());
+            const auto faceIndex = static_cast<std::uint32_t>(faceCount(model) - 1);
+            if (corners.size() == 3) {
+                model.triangles.push_back(
+                    {{corners[0], corners[1], corners[2]}, material, faceIndex, 0});
+                continue;
+            }
+            const PolygonTriangles split = triangulatePolygon(points);
+            for (const auto& [a, b, c] : split.triangles)
+                model.triangles.push_back(
+                    {{corners[a], corners[b], corners[c]}, material, faceIndex, 0});
+        }
+    }
+    if (model.triangles.empty())
+        throw SceneError(name, 0, "no faces found (points and lines are not rendered)");
+    return model;
+}
+
+} // namespace
+
+ObjModel readAssimpModel(std::string_view bytes, const std::filesystem::path& path,
+                         std::optional<OtherFormat> format) {
+    const std::string name = path.string();
+    if (format == OtherFormat::BinaryGltf)
+        if (const auto problem = glbFramingProblem(bytes)) throw SceneError(name, 0, *problem);
+    return readContained(name, [&] { return readInThisProcess(bytes, path, format); });
+}

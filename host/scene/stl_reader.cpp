@@ -1,0 +1,166 @@
+#include "scene/stl_reader.h"
+
+#include "scene/scene_error.h"
+
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <unordered_map>
+
+namespace {
+
+// Positions by their coordinates' bits, so that each is one position of the model.
+class SharedPositions {
+  public:
+    explicit SharedPositions(ObjModel& model) : model_(model) {}
+
+    std::uint32_t add(float x, float y, float z, std::int64_t line) {
+        const Key key{std::bit_cast<std::uint32_t>(x), std::bit_cast<std::uint32_t>(y),
+                      std::bit_cast<std::uint32_t>(z)};
+        const auto [found, added] =
+            index_.try_emplace(key, static_cast<std::uint32_t>(model_.positions.size()));
+        if (added) {
+            model_.positions.emplace_back(x, y, z);
+            model_.positionLines.push_back(line);
+            model_.colors.emplace_back();
+        }
+        return found->second;
+    }
+
+  private:
+    struct Key {
+        std::uint32_t x, y, z;
+        bool operator==(const Key&) const = default;
+    };
+    struct KeyHash {
+        std::size_t operator()(const Key& k) const {
+            std::uint64_t h = k.x;
+            h = h * 0x9E3779B97F4A7C15ull ^ k.y;
+            h = h * 0x9E3779B97F4A7C15ull ^ k.z;
+            return static_cast<std::size_t>(h ^ (h >> 29));
+        }
+    };
+    ObjModel& model_;
+    std::unordered_map<Key, std::uint32_t, KeyHash> index_;
+};
+
+void addTriangle(ObjModel& model, const std::uint32_t corners[3], std::int64_t line) {
+    for (int k = 0; k < 3; ++k)
+        model.facePositions.push_back(corners[k]);
+    model.faceStarts.push_back(model.facePositions.size());
+    const auto face = static_cast<std::uint32_t>(faceCount(model) - 1);
+    model.triangles.push_back(
+        {{{corners[0], {}}, {corners[1], {}}, {corners[2], {}}}, 0, face, line});
+}
+
+bool isSpace(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\n';
+}
+
+void readBinary(std::string_view bytes, const std::string& fileName, ObjModel& model) {
+    std::uint32_t count = 0;
+    std::memcpy(&count, bytes.data() + 80, 4);
+    if (84 + 50 * std::uint64_t(count) != bytes.size())
+        throw SceneError(fileName, 0,
+                         "a binary STL file holds 84 bytes and 50 a triangle: this one's header "
+                         "claims " +
+                             std::to_string(count) + " triangle(s), and it has " +
+                             std::to_string(bytes.size()) + " bytes");
+    SharedPositions shared(model);
+    model.positions.reserve(count / 2);
+    model.triangles.reserve(count);
+    for (std::uint32_t t = 0; t < count; ++t) {
+        const char* record = bytes.data() + 84 + 50 * std::size_t(t) + 12; // after the normal
+        std::uint32_t corners[3];
+        for (int k = 0; k < 3; ++k) {
+            float xyz[3];
+            std::memcpy(xyz, record + 12 * k, 12);
+            if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2]))
+                throw SceneError(fileName, 0,
+                                 "corner " + std::to_string(k + 1) + " of triangle " +
+                                     std::to_string(t + 1) + " is not a finite position");
+            corners[k] = shared.add(xyz[0], xyz[1], xyz[2], 0);
+        }
+        addTriangle(model, corners, 0);
+    }
+}
+
+void readText(std::string_view bytes, const std::string& fileName, ObjModel& model) {
+    SharedPositions shared(model);
+    std::size_t at = 0;
+    int line = 1;
+    std::uint32_t corners[3];
+    int corner = 0;
+    int facetLine = 0;
+    auto word = [&]() -> std::string_view {
+        while (at < bytes.size() && isSpace(bytes[at])) {
+            if (bytes[at] == '\n') ++line;
+            ++at;
+        }
+        const std::size_t start = at;
+        while (at < bytes.size() && !isSpace(bytes[at]))
+            ++at;
+        return bytes.substr(start, at - start);
+    };
+    for (std::string_view w = word(); !w.empty(); w = word()) {
+        if (w == "facet") {
+            if (corner != 0)
+                throw SceneError(fileName, line,
+                                 "a facet begins before the one at line " +
+                                     std::to_string(facetLine) + " has 3 vertices");
+            facetLine = line;
+        } else if (w == "vertex") {
+            float xyz[3];
+            for (float& value : xyz) {
+                const std::string_view number = word();
+                if (number.empty())
+                    throw SceneError(fileName, facetLine,
+                                     "the file is cut short inside this facet");
+                const auto [end, error] =
+                    std::from_chars(number.data(), number.data() + number.size(), value);
+                if (error != std::errc() || end != number.data() + number.size() ||
+                    !std::isfinite(value))
+                    throw SceneError(fileName, line,
+                                     "vertex expects 3 finite numbers, got '" +
+                                         std::string(number.substr(0, 40)) + "'");
+            }
+            if (corner == 3) throw SceneError(fileName, line, "a facet of more than 3 vertices");
+            corners[corner++] = shared.add(xyz[0], xyz[1], xyz[2], line);
+        } else if (w == "endfacet" || w == "endloop") {
+            if (w == "endfacet") {
+                if (corner != 3)
+                    throw SceneError(fileName, line,
+                                     "a facet of " + std::to_string(corner) +
+                                         " vertices (3 expected)");
+                addTriangle(model, corners, facetLine);
+                corner = 0;
+            }
+        }
+        // solid, its name, normal, outer, loop, endsolid and the facet normal's numbers are
+        // read past.
+    }
+    if (corner != 0)
+        throw SceneError(fileName, facetLine, "the file is cut short inside this facet");
+}
+
+} // namespace
+
+ObjModel readStl(std::string_view bytes, const std::string& fileName) {
+    ObjModel model;
+    model.materials.push_back(defaultObjMaterial());
+    const bool text = bytes.substr(0, 5) == "solid" &&
+                      bytes.substr(0, 1024).find("facet") != std::string_view::npos;
+    if (!text && bytes.size() < 84)
+        throw SceneError(fileName, 0,
+                         "neither an ASCII STL file (solid ... facet) nor a binary one (84 "
+                         "bytes and 50 a triangle): it has " +
+                             std::to_string(bytes.size()) + " bytes");
+    if (text)
+        readText(bytes, fileName, model);
+    else
+        readBinary(bytes, fileName, model);
+    if (model.triangles.empty()) throw SceneError(fileName, 0, "no facets found");
+    return model;
+}
