@@ -10,7 +10,7 @@
 #include "render/kernel_cache.h"
 #include "scene/camera_path.h"
 #include "scene/scene_loader.h"
-#include "scene/warning_summary.h"
+#include "scene/scene_summary.h"
 
 #include <iostream>
 
@@ -126,7 +126,7 @@ int runBatch(const Options& options) {
             ++failed;
             continue;
         }
-        for (const std::string& line : summarisedWarnings(scene.warnings))
+        for (const std::string& line : loadMessages(scene, scenePath.string()))
             note("%s\n", line.c_str());
         const std::vector<FrameView> frames = framesOf(options, scene, path);
         renderScene(options, context, kernels, scene, scenePath.stem().string(), frames);

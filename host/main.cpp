@@ -22,7 +22,6 @@
 #include "scene/scene_loader.h"
 #include "scene/scene_summary.h"
 #include "scene/scene_writer.h"
-#include "scene/warning_summary.h"
 #include "window/window.h"
 
 #include <chrono>
@@ -164,10 +163,13 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
     startup.parseMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - parseStart)
             .count();
-    for (const std::string& line : summarisedWarnings(scene.warnings))
+    for (const std::string& line : loadMessages(scene, options.scenePath.string()))
         note("%s\n", line.c_str());
     if (!options.saveScenePath.empty()) {
         writeSceneFile(options.saveScenePath, scene);
+        if (const std::string unwritten = unwrittenNote(scene, options.scenePath.string());
+            !unwritten.empty())
+            note("%s\n", unwritten.c_str());
         note("Wrote %s\n", options.saveScenePath.string().c_str());
         const bool nothingElse = options.outputPath.empty() && options.benchFrames == 0 &&
                                  !options.pixelGiven && !options.forceWindow &&

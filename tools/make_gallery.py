@@ -4,13 +4,16 @@
     python3 tools/make_gallery.py --raytracer build/Raytracer --models out/gallery \\
         --images docs/images
 
-Writes five Wavefront OBJ models with their MTL materials into --models, all made
+Writes six Wavefront OBJ models with their MTL materials into --models, all made
 here from formulas (none copied from elsewhere): a (3,2) torus-knot tube of quads
 (knot.obj), an icosahedron split once into 80 faces (gem.obj, shown with flat
 facets), a vase turned from a profile, written z-up as CAD and Blender models
-often are (vase.obj), a flat star (star.obj) and a long pencil (pencil.obj). Then renders each with Raytracer, straight from the OBJ file
-(framed, on a floor, lit: docs/models.md), to --images/gallery-NAME.png, and prints
-each command. Deterministic; standard library only.
+often are (vase.obj), a flat star (star.obj), a long pencil (pencil.obj) and a
+scanned-looking stone with vertex colours (rock.obj, also written as binary PLY,
+rock.ply, by tools/convert_model.py). Then renders each with Raytracer, straight
+from the model file (framed, on a floor, lit: docs/models.md), to
+--images/gallery-NAME.png, and prints each command. Deterministic; standard
+library only.
 """
 
 import argparse
@@ -22,16 +25,18 @@ import sys
 FMT = "%.6f"
 
 
-def write_model(folder, name, positions, faces, material):
-    """NAME.obj (positions, faces of 1-based indices) and NAME.mtl with one material."""
+def write_model(folder, name, positions, faces, material, colours=None):
+    """NAME.obj (positions, faces of 1-based indices, a colour per position when given) and
+    NAME.mtl with one material."""
     with open(os.path.join(folder, name + ".mtl"), "w") as out:
         out.write("newmtl %s\nKd %s\nKs %s\nNs %g\nillum %d\n" % (
             name, " ".join(FMT % c for c in material["Kd"]), " ".join(FMT % c for c in material["Ks"]),
             material["Ns"], material.get("illum", 2)))
     with open(os.path.join(folder, name + ".obj"), "w") as out:
         out.write("# made by tools/make_gallery.py\nmtllib %s.mtl\n" % name)
-        for p in positions:
-            out.write("v %s\n" % " ".join(FMT % c for c in p))
+        for i, p in enumerate(positions):
+            colour = " " + " ".join(FMT % c for c in colours[i]) if colours else ""
+            out.write("v %s%s\n" % (" ".join(FMT % c for c in p), colour))
         out.write("usemtl %s\n" % name)
         for face in faces:
             out.write("f %s\n" % " ".join(str(i + 1) for i in face))
@@ -71,8 +76,9 @@ def knot(segments=240, sides=16, radius=0.35):
     return positions, faces
 
 
-def gem():
-    """An icosahedron with each face split into four, pushed out onto the sphere."""
+def gem(levels=1):
+    """An icosahedron with each face split into four, pushed out onto the sphere, levels
+    times."""
     g = (1.0 + math.sqrt(5.0)) / 2.0
     corners = [(-1, g, 0), (1, g, 0), (-1, -g, 0), (1, -g, 0), (0, -1, g), (0, 1, g), (0, -1, -g), (0, 1, -g),
                (g, 0, -1), (g, 0, 1), (-g, 0, -1), (-g, 0, 1)]
@@ -91,11 +97,29 @@ def gem():
             middle[key] = len(positions) - 1
         return middle[key]
 
-    split = []
-    for a, b, c in faces:
-        ab, bc, ca = midpoint(a, b), midpoint(b, c), midpoint(c, a)
-        split += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
-    return positions, split
+    for _ in range(levels):
+        split = []
+        for a, b, c in faces:
+            ab, bc, ca = midpoint(a, b), midpoint(b, c), midpoint(c, a)
+            split += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
+        faces = split
+    return positions, faces
+
+
+def rock():
+    """A scanned-looking stone: an icosahedron split four times (5,120 triangles), its
+    surface pushed in and out by a sum of sines and flattened, each vertex coloured from
+    sandstone to rust by its height and bumps, as a photogrammetry scan comes."""
+    positions, faces = gem(levels=4)
+    shaped, colours = [], []
+    for x, y, z in positions:
+        bump = (0.08 * math.sin(5.0 * x + 1.3) * math.sin(4.0 * z + 0.7) + 0.05 * math.sin(11.0 * y + 3.0 * x)
+                + 0.03 * math.sin(17.0 * z - 7.0 * y))
+        r = 1.0 + bump
+        shaped.append((1.3 * r * x, 0.75 * r * y, r * z))
+        t = min(1.0, max(0.0, 0.45 + 0.2 * y + 5.0 * bump))
+        colours.append((0.35 + 0.5 * t, 0.22 + 0.45 * t, 0.18 + 0.3 * t))
+    return shaped, faces, colours
 
 
 def vase(rings=48, sides=48):
@@ -150,7 +174,12 @@ MODELS = {
     "vase": (vase, {"Kd": (0.9, 0.88, 0.8), "Ks": (0.15, 0.15, 0.15), "Ns": 40}, ["--up", "z"]),
     "star": (star, {"Kd": (0.95, 0.75, 0.1), "Ks": (0.5, 0.5, 0.5), "Ns": 80}, []),
     "pencil": (pencil, {"Kd": (0.95, 0.6, 0.1), "Ks": (0.6, 0.6, 0.6), "Ns": 120}, ["--crease", "40"]),
+    # Written as OBJ with vertex colours, then as binary PLY by tools/convert_model.py, and
+    # rendered from the PLY file (which holds no material: the default one, and its colours).
+    "rock": (rock, {"Kd": (0.75, 0.75, 0.75), "Ks": (0.1, 0.1, 0.1), "Ns": 30}, []),
 }
+# The models rendered from another format than their OBJ file: name -> extension.
+CONVERTED = {"rock": ".ply"}
 
 
 def main(argv=None):
@@ -165,9 +194,18 @@ def main(argv=None):
     os.makedirs(args.models, exist_ok=True)
     os.makedirs(args.images, exist_ok=True)
     for name, (make, material, options) in MODELS.items():
-        positions, faces = make()
-        write_model(args.models, name, positions, faces, material)
-        command = [args.raytracer, os.path.join(args.models, name + ".obj"), *options, "--width", str(args.width),
+        made = make()
+        write_model(args.models, name, made[0], made[1], material, made[2] if len(made) > 2 else None)
+        model = os.path.join(args.models, name + ".obj")
+        if name in CONVERTED:
+            converted = os.path.join(args.models, name + CONVERTED[name])
+            convert = [sys.executable, os.path.join(os.path.dirname(os.path.abspath(__file__)), "convert_model.py"),
+                       model, converted]
+            print(" ".join(convert[1:]))
+            if subprocess.run(convert).returncode != 0:
+                return 1
+            model = converted
+        command = [args.raytracer, model, *options, "--width", str(args.width),
                    "--height", str(args.height), "--spp", str(args.spp), "-o",
                    os.path.join(args.images, "gallery-%s.png" % name)]
         print(" ".join(command))

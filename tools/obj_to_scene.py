@@ -151,10 +151,11 @@ def apply_illum(material, illum):
     material["mir"] = 1.0 if illum >= 3 else 0.0
 
 
-def read_mtl(path, warn):
+def read_mtl(path, warn, textured=None):
     """{name: material} from an MTL file. A line that is wrong is a warning, not an error:
     the material it belongs to falls back to the default one (its other lines are not read),
-    a line before any material is left out, and the model renders on."""
+    a line before any material is left out, and the model renders on. The names of the
+    materials with a texture map (map_Kd), which a scene cannot hold, are added to textured."""
     materials, current, current_name, skipping = {}, None, None, False
     illum_of = {}  # applied at the end: a Ks may follow its illum
     for line, text in logical_lines(path):
@@ -205,13 +206,17 @@ def read_mtl(path, warn):
                     raise ConversionError(path, line, "illum expects an illumination model, a whole number "
                                           "0 to 10, got %s" % args[0])
                 illum_of[current_name] = int(illum)
-            # Ka, Ke, d, Tr, Ni, maps: nothing in this renderer's model uses them.
+            elif keyword == "map_Kd" and current is not None and textured is not None:
+                textured.add(current_name)
+            # Ka, d, Tr, Ni, other maps: nothing in the scene format holds them.
         except ConversionError as error:
             consequence = "; the line is left out"
             if current is not None:
                 illum_of.pop(current_name, None)
                 current.clear()
                 current.update(DEFAULT_MATERIAL)
+                if textured is not None:
+                    textured.discard(current_name)
                 skipping = True
                 consequence = "; material '%s' is the default one" % current_name
             elif skipping:
@@ -227,6 +232,7 @@ def read_mtl(path, warn):
 
 class Model:
     def __init__(self):
+        self.textured = set()  # the names of materials with a texture map (map_Kd)
         self.positions = []  # (x, y, z)
         self.position_lines = []  # each position's v line, for messages
         self.colors = []  # (r, g, b) or None, per position
@@ -415,7 +421,7 @@ def read_obj(path, warn):
                     raise ConversionError(mtl, 0, "the file holds %d bytes, more than a material library "
                                           "may (%d MiB)" % (os.path.getsize(mtl), MAX_MTL_BYTES >> 20))
                 if os.path.exists(mtl):
-                    materials.update(read_mtl(mtl, warn))
+                    materials.update(read_mtl(mtl, warn, model.textured))
                 else:
                     if not missing:
                         missing_line = line
@@ -1002,6 +1008,9 @@ def main(argv=None):
             os.replace(temporary, args.out)  # never a half-written scene
         else:
             count = write_scene(sys.stdout, model, args, warn)
+        if model.textured:
+            warn("%s: note: the scene format holds no textures: the texture maps of %d material(s) are not "
+                 "written" % (args.obj, len(model.textured)))
     except ConversionError as error:
         print(error, file=sys.stderr)
         return 1

@@ -129,9 +129,13 @@ ObjModel readInThisProcess(std::string_view bytes, const std::filesystem::path& 
     const aiScene* scene =
         hint ? importer.ReadFileFromMemory(bytes.data(), bytes.size(), flags, hint)
              : importer.ReadFile(name, flags);
-    if (!scene || !scene->mRootNode)
-        throw SceneError(name, 0,
-                         std::string("cannot read the model: ") + importer.GetErrorString());
+    if (!scene || !scene->mRootNode) {
+        std::string reason = importer.GetErrorString();
+        // assimp names the file it read from memory by a placeholder: say it plainly.
+        if (reason.starts_with("No suitable reader found"))
+            reason = "assimp found no reader that accepts it";
+        throw SceneError(name, 0, "cannot read the model: " + reason);
+    }
 
     ObjModel model;
     // Material i of the file is model material i + 1 (0 is the default one).

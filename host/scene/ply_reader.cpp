@@ -284,6 +284,26 @@ class Values {
         return 0.0;
     }
 
+    // In ASCII an instance is a line: what is left of the line after its properties (some
+    // exporters write more values than their header declares) is read past, and counted.
+    void endInstance() {
+        if (!ascii()) return;
+        while (at_ < bytes_.size() &&
+               (bytes_[at_] == ' ' || bytes_[at_] == '\t' || bytes_[at_] == '\r'))
+            ++at_;
+        if (at_ < bytes_.size() && bytes_[at_] != '\n') {
+            if (extraLines_++ == 0) firstExtraLine_ = line_;
+            while (at_ < bytes_.size() && bytes_[at_] != '\n')
+                ++at_;
+        }
+        if (at_ < bytes_.size()) {
+            ++at_;
+            ++line_;
+        }
+    }
+    std::size_t extraLines() const { return extraLines_; }
+    int firstExtraLine() const { return firstExtraLine_; }
+
     [[noreturn]] void fail(const std::string& message) const {
         throw SceneError(fileName_, line(), message);
     }
@@ -321,6 +341,8 @@ class Values {
     const std::string& fileName_;
     const Element* element_ = nullptr;
     std::uint64_t index_ = 0;
+    std::size_t extraLines_ = 0;
+    int firstExtraLine_ = 0;
 };
 
 // The fewest bytes one instance of an element takes in the body: its scalars' sizes and its
@@ -508,6 +530,7 @@ ObjModel readPly(std::string_view bytes, const std::string& fileName) {
                     break;
                 }
             }
+            values.endInstance();
             if (!vertex) continue;
             model.positions.push_back(position);
             model.positionLines.push_back(line);
@@ -518,6 +541,11 @@ ObjModel readPly(std::string_view bytes, const std::string& fileName) {
     }
     if (model.triangles.empty())
         throw SceneError(fileName, 0, "no faces found (a face or tristrips element)");
+    if (values.extraLines() > 0)
+        model.warnings.push_back(sceneLocation(fileName, values.firstExtraLine()) +
+                                 "warning: " + std::to_string(values.extraLines()) +
+                                 " line(s) hold more values than the header's properties; the "
+                                 "extra values are ignored");
     if (reading.shortFaces > 0)
         model.warnings.push_back(sceneLocation(fileName, 0) +
                                  "warning: " + std::to_string(reading.shortFaces) +

@@ -1,6 +1,8 @@
 #include "scene/scene_summary.h"
 
+#include "scene/scene_error.h"
 #include "scene/scene_triangles.h"
+#include "scene/warning_summary.h"
 
 #include <array>
 #include <charconv>
@@ -57,10 +59,7 @@ std::string sceneSummary(const Scene& scene) {
                           : std::string(m->inside ? "none (a room has its own)"
                                                   : "none (--no-ground)")) +
                 "\n";
-        std::string unrendered;
-        for (const auto& [what, holding] : m->notRendered)
-            unrendered += (unrendered.empty() ? "" : "; ") + what + " in " +
-                          std::to_string(holding) + (holding == 1 ? " material" : " materials");
+        const std::string unrendered = notRenderedText(scene);
         model +=
             "not rendered: " + (unrendered.empty() ? std::string("nothing") : unrendered) + "\n";
     }
@@ -70,4 +69,20 @@ std::string sceneSummary(const Scene& scene) {
            "materials: " + std::to_string(materials.size()) + "\n" + "bounds: " +
            (any ? triple(low) + " to " + triple(high) : "none (no spheres or triangles)") + "\n" +
            model + "warnings: " + std::to_string(scene.warnings.size()) + "\n";
+}
+
+std::string notRenderedText(const Scene& scene) {
+    std::string text;
+    if (!scene.model) return text;
+    for (const auto& [what, holding] : scene.model->notRendered)
+        text += (text.empty() ? "" : "; ") + what + " in " + std::to_string(holding) +
+                (holding == 1 ? " material" : " materials");
+    return text;
+}
+
+std::vector<std::string> loadMessages(const Scene& scene, const std::string& fileName) {
+    std::vector<std::string> lines = summarisedWarnings(scene.warnings);
+    if (const std::string unrendered = notRenderedText(scene); !unrendered.empty())
+        lines.push_back(sceneLocation(fileName, 0) + "note: not rendered: " + unrendered);
+    return lines;
 }

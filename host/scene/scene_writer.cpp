@@ -95,3 +95,13 @@ void writeSceneFile(const std::filesystem::path& path, const Scene& scene) {
         throw std::runtime_error("cannot write " + path.string() + ": " + error.message());
     }
 }
+
+std::string unwrittenNote(const Scene& scene, const std::string& modelFile) {
+    std::size_t textured = 0;
+    for (const Mesh& mesh : scene.meshes)
+        for (const MeshMaterial& material : mesh.materials)
+            textured += material.diffuseTexture.empty() ? 0 : 1;
+    if (textured == 0) return {};
+    return modelFile + ": note: the scene format holds no textures: the texture maps of " +
+           std::to_string(textured) + " material(s) are not written";
+}

@@ -15,3 +15,8 @@ std::string sceneText(const Scene& scene);
 // Writes sceneText to path through a .tmp file renamed into place, so that a failure never
 // leaves half a scene; throws std::runtime_error naming the file.
 void writeSceneFile(const std::filesystem::path& path, const Scene& scene);
+
+// What the scene format cannot hold of the scene, as a note to print after writing it
+// ("FILE: note: the scene format holds no textures: the texture maps of 2 material(s) are
+// not written", FILE the model's), or empty when it holds everything.
+std::string unwrittenNote(const Scene& scene, const std::string& modelFile);

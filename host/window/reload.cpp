@@ -6,7 +6,7 @@
 #include "cli/render_settings.h"
 #include "gpu/vk_check.h"
 #include "scene/scene_loader.h"
-#include "scene/warning_summary.h"
+#include "scene/scene_summary.h"
 
 #include <cstdio>
 #include <exception>
@@ -50,7 +50,7 @@ void reloadScene(Viewer& viewer) {
         std::fprintf(stderr, "%s\nKeeping the last good scene.\n", error.what());
         return;
     }
-    for (const std::string& line : summarisedWarnings(scene.warnings))
+    for (const std::string& line : loadMessages(scene, viewer.options.scenePath.string()))
         std::fprintf(stderr, "%s\n", line.c_str());
     placeLightRig(scene, viewer.camera); // a model's rig for where the window's camera is now
     if (rebuildRenderer(viewer, scene, viewer.renderer.settings)) {

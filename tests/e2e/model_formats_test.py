@@ -16,7 +16,9 @@ CPU reference, reading the GLB, agrees. A PLY named .obj is read as PLY. Bad fil
 short, a header claiming 2^31 faces, an index naming no vertex, a GLB chunk longer than
 the file, a glTF naming a missing buffer or a device, a link to /dev/zero) exit 3 with the
 file's name and what is wrong, each within a time limit. PLY triangle strips (restarted,
-with a join's degenerate triangle) render as the OBJ of their triangles.
+with a join's degenerate triangle) render as the OBJ of their triangles; an ASCII PLY
+whose lines hold more values than its header declares renders as without them, with one
+warning.
 """
 import math
 import os
@@ -130,6 +132,23 @@ class EveryFormatRendersAsTheObj(unittest.TestCase):
             with self.subTest(format=name):
                 self.assert_same_image(coloured_png, self.render(self.convert(coloured, name, *options)))
         self.assert_same_image(shiny_png, self.render(self.convert(coloured, "coloured.glb", *GLTF_MATERIAL)))
+
+    def test_ascii_lines_with_more_values_than_declared(self):
+        # Some exporters write more values on a line than the header declares: an element
+        # is a line, the extra values are ignored, and one warning counts the lines.
+        plain = self.write("extra.obj", "\n".join(model_lines(False)) + "\n")
+        ascii_ply = self.convert(plain, "extra_plain.ply", "--ascii")
+        with open(ascii_ply) as source:
+            head, body = source.read().split("end_header\n")
+        lines = body.splitlines()
+        extra = self.write("extra.ply", head + "end_header\n" + "\n".join(
+            line + (" 9 1 1" if line.startswith("3 ") else "") for line in lines) + "\n")
+        drawn = run(RAYTRACER, extra, "-o", extra + ".png", *SIZE)
+        self.assertEqual(drawn.returncode, 0, drawn.stderr)
+        first = 1 + head.count("\n") + 1 + sum(1 for line in lines if not line.startswith("3 "))
+        self.assertIn("%s:%d: warning: 180 line(s) hold more values than the header's properties; the extra "
+                      "values are ignored" % (extra, first), drawn.stderr.decode())
+        self.assert_same_image(self.render(ascii_ply), extra + ".png")
 
     def test_triangle_strips(self):
         # A PLY strip of 8 vertices, restarted once (-1), with a join's degenerate triangle:

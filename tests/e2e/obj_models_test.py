@@ -690,6 +690,21 @@ class TheDefaultViewShowsTheModel(unittest.TestCase):
         self.assertIn(b"\nnot rendered: other maps (bump, map_Ks, ...) in 1 material; "
                       b"texture maps (map_Kd) in 2 materials; transparency (d, Tr) in 1 material\n", check.stdout)
         self.assertIn(b"\nlights: 4\n", check.stdout)  # the rig's three and the lamp's Ke
+        # A render names it once, in one line; --save-scene and the tool say that the scene
+        # format holds no textures.
+        drawn = run(RAYTRACER, path, "-o", path + ".png", "--width", "40", "--height", "30")
+        self.assertEqual(drawn.returncode, 0, drawn.stderr)
+        lines = [line for line in drawn.stderr.decode().splitlines() if "not rendered" in line]
+        self.assertEqual(lines, [path + ": note: not rendered: other maps (bump, map_Ks, ...) in 1 material; "
+                                 "texture maps (map_Kd) in 2 materials; transparency (d, Tr) in 1 material"])
+        unwritten = (path + ": note: the scene format holds no textures: the texture maps of 2 material(s) are "
+                     "not written")
+        saved = run(RAYTRACER, path, "--save-scene", path + ".scene")
+        self.assertEqual(saved.returncode, 0, saved.stderr)
+        self.assertIn(unwritten, saved.stderr.decode().splitlines())
+        tool = run(sys.executable, TOOL, path, "--fit", "-o", path + ".tool.scene")
+        self.assertEqual(tool.returncode, 0, tool.stderr)
+        self.assertIn(unwritten, tool.stderr.decode().splitlines())
 
 
 def coarse_sphere(rings=6, sides=8):
