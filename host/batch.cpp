@@ -5,6 +5,7 @@
 #include "base/scope_guard.h"
 #include "cli/output_pattern.h"
 #include "cli/render_settings.h"
+#include "model/scene_file.h"
 #include "render/headless.h"
 #include "render/interrupt.h"
 #include "render/kernel_cache.h"

@@ -7,6 +7,7 @@
 #include "compare/compare_page.h"
 #include "compare/compare_report.h"
 #include "compare/comparison.h"
+#include "model/scene_file.h"
 #include "scene/scene_error.h"
 #include "scene/scene_loader.h"
 

@@ -15,6 +15,7 @@
 #include "compare_command.h"
 #include "gpu/cpu_driver.h"
 #include "gpu/device_list.h"
+#include "model/scene_file.h"
 #include "render/headless.h"
 #include "render/interrupt.h"
 #include "render/kernel_sources.h"

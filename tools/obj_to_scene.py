@@ -262,7 +262,7 @@ PLANAR_TOLERANCE = 1e-4  # Raytracer's kPlanarTolerance
 
 def triangulate(corners):
     """A polygon's triangles (corner indices) and whether it was concave but fanned, as
-    Raytracer's triangulatePolygon (host/scene/polygon_triangulation.cpp), operation for
+    Raytracer's triangulatePolygon (host/model/polygon_triangulation.cpp), operation for
     operation: a fan when convex, ear clipping when concave and planar, a fan (counted)
     when concave and bent out of its plane or crossing itself."""
     n = len(corners)

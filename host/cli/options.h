@@ -4,10 +4,10 @@
 
 #include "base/output_format.h"
 #include "cli/usage_error.h"
+#include "model/obj_scene.h"
 #include "packing/bvh.h"
 #include "packing/kernel_choices.h"
 #include "scene/camera.h"
-#include "scene/obj_scene.h"
 
 #include <glm/glm.hpp>
 

@@ -3,7 +3,7 @@
 
 #include "gpu/image_limits.h"
 #include "gpu/pipeline_cache.h"
-#include "scene/model_fit.h"
+#include "model/model_fit.h"
 
 RenderSettings renderSettingsFrom(const Options& options) {
     RenderSettings settings;

@@ -34,7 +34,7 @@ struct MeshMaterial {
     // its MTL file); empty: none. Not sampled yet: the renderer shades with phong.diffuse.
     std::string diffuseTexture;
     // MTL's Ke, negative parts 0: a model's emitting surfaces become point lights
-    // (scene/obj_scene.h). Zero: the material emits nothing.
+    // (model/obj_scene.h). Zero: the material emits nothing.
     glm::dvec3 emission{0.0};
 };
 

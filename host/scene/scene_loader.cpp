@@ -10,15 +10,10 @@
 #include "scene/scene_loader.h"
 
 #include "base/parallel.h"
-#include "scene/assimp_model.h"
 #include "scene/file_format.h"
 #include "scene/mapped_file.h"
-#include "scene/obj_reader.h"
-#include "scene/obj_scene.h"
-#include "scene/ply_reader.h"
 #include "scene/scene_lexer.h"
 #include "scene/scene_parser.h"
-#include "scene/stl_reader.h"
 
 #include <cerrno>
 #include <cstdint>
@@ -181,25 +176,4 @@ Scene parseScene(std::string_view text, const std::string& fileName,
 
 Scene parseScene(std::string_view text, const std::string& fileName) {
     return parseScene(text, fileName, SceneParseOptions{});
-}
-
-Scene loadScene(const std::filesystem::path& path, const ObjSceneSetup& modelSetup) {
-    const std::string name = path.string();
-    std::error_code error;
-    // open succeeds on a directory on Linux and only the read fails; say it plainly.
-    if (std::filesystem::is_directory(path, error))
-        throw SceneError(name, 0, std::string("cannot open file: ") + std::strerror(EISDIR));
-    const MappedFile file(name);
-    // A model format is told by the file's first bytes, whatever its name; then by the name.
-    const std::optional<OtherFormat> format = otherFileFormat(file.text());
-    if (format == OtherFormat::Ply || (!format && isPlyPath(path)))
-        return sceneFromObj(readPly(file.text(), name), modelSetup, name);
-    if (format == OtherFormat::Stl || (!format && isStlPath(path)))
-        return sceneFromObj(readStl(file.text(), name), modelSetup, name);
-    if (format && *format != OtherFormat::Utf16Text)
-        return sceneFromObj(readAssimpModel(file.text(), path, format), modelSetup, name);
-    if (isObjPath(path)) return sceneFromObj(readObjFile(path, file.text()), modelSetup, name);
-    if (isAssimpPath(path) && !format)
-        return sceneFromObj(readAssimpModel(file.text(), path, std::nullopt), modelSetup, name);
-    return parseScene(file.text(), name);
 }

@@ -1,14 +1,13 @@
-// Scene text to a Scene: the entry points of the scene folder. A small text is read in one
-// pass; a large one is shared among threads (scene_loader.cpp), with exactly the result,
-// errors and warnings of one pass.
+// Scene text to a Scene: the entry point of the scene folder (a file of any kind, scene or
+// model, is read by model/scene_file.h). A small text is read in one pass; a large one is
+// shared among threads (scene_loader.cpp), with exactly the result, errors and warnings of
+// one pass.
 #pragma once
 
-#include "scene/obj_scene.h"
 #include "scene/scene.h"
 #include "scene/scene_error.h"
 
 #include <cstddef>
-#include <filesystem>
 #include <string>
 #include <string_view>
 
@@ -24,8 +23,3 @@ struct SceneParseOptions {
 };
 Scene parseScene(std::string_view text, const std::string& fileName,
                  const SceneParseOptions& options);
-
-// Reads and parses a file; a missing, unreadable or binary file is a SceneError. A path
-// ending in .obj is read as a Wavefront OBJ model and made a scene by the rules of
-// obj_scene.h (docs/models.md); one ending in .ply is refused with a message.
-Scene loadScene(const std::filesystem::path& path, const ObjSceneSetup& modelSetup = {});

@@ -1,6 +1,7 @@
 // Hot reload: a new renderer for a saved scene file or shader folder (or the R key),
 // swapped in only when it could be built, so that a typo keeps the last good image.
 #include "window/reload.h"
+#include "model/scene_file.h"
 
 #include "cli/options.h"
 #include "cli/render_settings.h"

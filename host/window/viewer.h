@@ -11,9 +11,9 @@
 #include "cli/options.h"
 #include "compare/comparison.h"
 #include "gpu/context.h"
+#include "model/obj_scene.h"
 #include "render/renderer.h"
 #include "scene/camera.h"
-#include "scene/obj_scene.h"
 #include "scene/scene.h"
 #include "window/swapchain.h"
 

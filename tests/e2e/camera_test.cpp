@@ -1,6 +1,7 @@
 // The camera options end to end: a moved camera (--camera-pos/-target/-up) renders what
 // the double-precision reference sees from there, the default camera given explicitly is
 // the default image byte for byte, and impossible cameras are usage errors.
+#include "model/scene_file.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
 

@@ -1,5 +1,6 @@
 // The command line as a user meets it: help, usage errors, bad scene files (clear
 // message, non-zero exit, no image written), device choice and --bench output.
+#include "model/scene_file.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
 

@@ -14,6 +14,7 @@
 #include "compare/jpeg_codec.h"
 #include "compare/jpeg_file.h"
 #include "compare/student_model.h"
+#include "model/scene_file.h"
 #include "reference/reference_renderer.h"
 #include "scene/scene_loader.h"
 

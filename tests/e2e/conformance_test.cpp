@@ -31,6 +31,7 @@
 // off the plane, and the scene matches the reference on both paths.
 #include "test_support.h"
 
+#include "model/scene_file.h"
 #include "scene/scene_loader.h"
 
 #include <gtest/gtest.h>

@@ -14,6 +14,7 @@
 #include "compare/comparison.h"
 #include "compare/jpeg_codec.h"
 #include "compare/student_model.h"
+#include "model/scene_file.h"
 #include "reference/reference_story.h"
 #include "scene/scene_loader.h"
 #include "student_model_support.h"

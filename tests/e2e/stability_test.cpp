@@ -22,6 +22,7 @@
 // and written to BUILD/test-output/stability/SCENE_PRECISION.csv.
 #include "test_support.h"
 
+#include "model/scene_file.h"
 #include "reference_range.h"
 #include "scene/scene_loader.h"
 

@@ -1,17 +1,17 @@
 // libFuzzer target for the model readers other than OBJ: the PLY and STL readers
-// (host/scene/ply_reader.h, stl_reader.h) and assimp's (assimp_model.h, in a child process) with
+// (host/model/ply_reader.h, stl_reader.h) and assimp's (assimp_model.h, in a child process) with
 // the GLB framing check before it (model_file_checks.h). Any input told to be PLY, STL or GLB by
 // its first bytes must either become a scene or be rejected with a SceneError. Anything
 // else (another exception, a crash, a sanitizer report, a leak, a hang, unbounded memory)
 // is a bug. A glTF's JSON is left out: it names files beside it.
 // Also compiled into model_fuzz_replay (tests/fuzz/fuzz_replay.cpp).
-#include "scene/assimp_model.h"
+#include "model/assimp_model.h"
+#include "model/model_file_checks.h"
+#include "model/obj_scene.h"
+#include "model/ply_reader.h"
+#include "model/stl_reader.h"
 #include "scene/file_format.h"
-#include "scene/model_file_checks.h"
-#include "scene/obj_scene.h"
-#include "scene/ply_reader.h"
 #include "scene/scene_error.h"
-#include "scene/stl_reader.h"
 
 #include <cstddef>
 #include <cstdint>

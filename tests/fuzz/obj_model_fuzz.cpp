@@ -1,10 +1,10 @@
-// libFuzzer target for the OBJ model reader (host/scene/obj_reader.h, obj_scene.h): any
+// libFuzzer target for the OBJ model reader (host/model/obj_reader.h, obj_scene.h): any
 // input must either become a scene, and its scene text, or be rejected with a SceneError.
 // Anything else (another exception, a crash, a sanitizer report, a leak, a hang, unbounded
 // memory) is a bug. The input is also every material library it names, so the MTL reader
 // is fuzzed by the same bytes. Also compiled into obj_fuzz_replay (tests/fuzz/fuzz_replay.cpp).
-#include "scene/obj_reader.h"
-#include "scene/obj_scene.h"
+#include "model/obj_reader.h"
+#include "model/obj_scene.h"
 #include "scene/scene_error.h"
 #include "scene/scene_writer.h"
 

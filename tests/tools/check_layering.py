@@ -16,15 +16,16 @@ import sys
 ALLOWED = {
     "base": set(),
     "scene": {"base"},
+    "model": {"base", "scene"},
     "gpu": {"base"},
     "packing": {"base", "scene"},
     "render": {"base", "scene", "gpu", "packing"},
-    "cli": {"base", "scene", "gpu", "packing", "render"},
-    "window": {"base", "scene", "gpu", "packing", "render", "cli", "compare"},
+    "cli": {"base", "scene", "model", "gpu", "packing", "render"},
+    "window": {"base", "scene", "model", "gpu", "packing", "render", "cli", "compare"},
     "reference": {"base", "scene"},
     "compare": {"base", "scene", "reference"},
     # main.cpp, bench.*, batch.*
-    ".": {"base", "scene", "gpu", "packing", "render", "cli", "window", "reference", "compare"},
+    ".": {"base", "scene", "model", "gpu", "packing", "render", "cli", "window", "reference", "compare"},
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s+["<]([^">]+)[">]', re.M)
 

@@ -2,9 +2,9 @@
 // floor a mesh of its own, every triangle reads back in the scene format's per-vertex form
 // (scene_triangles.h), and the packer makes exactly the same GPU arrays from a mesh as from
 // the same triangles written per vertex, so a model renders the same bytes either way.
+#include "model/obj_reader.h"
+#include "model/obj_scene.h"
 #include "packing/scene_packing.h"
-#include "scene/obj_reader.h"
-#include "scene/obj_scene.h"
 #include "scene/scene_triangles.h"
 
 #include <gtest/gtest.h>

@@ -2,9 +2,9 @@
 // named by its first bytes (PLY, STL, glTF, UTF-16 text), a material library that is
 // missing is one warning that says how many faces fell back to the default material, and
 // a concave face is split by ear clipping (its area kept, its holes open).
+#include "model/obj_reader.h"
+#include "model/polygon_triangulation.h"
 #include "scene/file_format.h"
-#include "scene/obj_reader.h"
-#include "scene/polygon_triangulation.h"
 #include "scene/scene_error.h"
 #include "scene/scene_loader.h"
 

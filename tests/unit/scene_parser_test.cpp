@@ -1,5 +1,6 @@
 // The scene parser from strings: every accepted form, every error with its exact
 // message, the warnings, and the sample scenes of the classic assignment.
+#include "model/scene_file.h"
 #include "scene/scene_lexer.h"
 #include "scene/scene_loader.h"
 #include "scene/warning_summary.h"

@@ -2,6 +2,7 @@
 
 #include "base/json.h"
 #include "base/median.h"
+#include "model/scene_file.h"
 #include "scene/scene_loader.h"
 
 #include <algorithm>

@@ -1,6 +1,7 @@
 // reference_render SCENE -o out.png [options]: the CPU reference renderer as a tool.
 #include "base/output_format.h"
 #include "compare/student_model.h"
+#include "model/scene_file.h"
 #include "reference/reference_renderer.h"
 #include "reference/reference_story.h"
 #include "scene/scene_loader.h"

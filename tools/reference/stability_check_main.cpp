@@ -1,6 +1,7 @@
 // stability_check SCENE [options] IMAGE.png...: how many pixels of each image are wrong
 // against the CPU reference's range (reference_range.h), as CSV on stdout. Used by
 // tools/stability and tools/speed_accuracy; the stability test calls the library.
+#include "model/scene_file.h"
 #include "reference_range.h"
 #include "scene/scene_loader.h"
 #include "tool_arguments.h"

@@ -1,13 +1,13 @@
 // ObjModel to Scene (obj_scene.h). The arithmetic is the same, operation for operation and
 // in the same order, as tools/obj_to_scene.py's in double precision, so that both write
 // the same scene text; docs/models.md states the rules.
-#include "scene/obj_scene.h"
+#include "model/obj_scene.h"
 
 #include "base/deduplicator.h"
-#include "scene/exact_vectors.h"
-#include "scene/far_vertices.h"
-#include "scene/model_fit.h"
-#include "scene/model_lights.h"
+#include "model/exact_vectors.h"
+#include "model/far_vertices.h"
+#include "model/model_fit.h"
+#include "model/model_lights.h"
 #include "scene/scene_error.h"
 
 #include <algorithm>

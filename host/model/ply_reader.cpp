@@ -1,6 +1,6 @@
-#include "scene/ply_reader.h"
+#include "model/ply_reader.h"
 
-#include "scene/polygon_triangulation.h"
+#include "model/polygon_triangulation.h"
 #include "scene/scene_error.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "scene/polygon_triangulation.h"
+#include "model/polygon_triangulation.h"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 // program. The model comes back through a pipe as bytes (model_bytes.h).
 #pragma once
 
-#include "scene/obj_model.h"
+#include "model/obj_model.h"
 
 #include <functional>
 #include <string>

@@ -5,8 +5,8 @@
 // states how each format's contents map onto it.
 #pragma once
 
+#include "model/obj_model.h"
 #include "scene/file_format.h"
-#include "scene/obj_model.h"
 
 #include <filesystem>
 #include <optional>

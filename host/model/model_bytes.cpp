@@ -1,4 +1,4 @@
-#include "scene/model_bytes.h"
+#include "model/model_bytes.h"
 
 #include <cstring>
 #include <stdexcept>

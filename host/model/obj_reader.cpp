@@ -1,11 +1,11 @@
 // The OBJ and MTL statements, one logical line at a time (obj_reader.h). Each message
 // is the one tools/obj_to_scene.py prints for the same line, so that the two readers
 // can be held to each other (tests/tools/obj_to_scene_test.py).
-#include "scene/obj_reader.h"
+#include "model/obj_reader.h"
 
+#include "model/polygon_triangulation.h"
 #include "scene/file_format.h"
 #include "scene/mapped_file.h"
-#include "scene/polygon_triangulation.h"
 #include "scene/scene_error.h"
 #include "scene/scene_lexer.h"
 

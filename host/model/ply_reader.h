@@ -8,7 +8,7 @@
 // are checked against the bytes after it before anything is allocated for them.
 #pragma once
 
-#include "scene/obj_model.h"
+#include "model/obj_model.h"
 
 #include <string>
 #include <string_view>

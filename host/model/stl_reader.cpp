@@ -1,4 +1,4 @@
-#include "scene/stl_reader.h"
+#include "model/stl_reader.h"
 
 #include "scene/scene_error.h"
 

@@ -1,8 +1,8 @@
-#include "scene/assimp_model.h"
+#include "model/assimp_model.h"
 
-#include "scene/contained_reader.h"
-#include "scene/model_file_checks.h"
-#include "scene/polygon_triangulation.h"
+#include "model/contained_reader.h"
+#include "model/model_file_checks.h"
+#include "model/polygon_triangulation.h"
 #include "scene/scene_error.h"
 
 #include <assimp/DefaultIOSystem.h>

@@ -1,9 +1,9 @@
 // A model's lights (model_lights.h): the rig that follows the camera and the lights of its
 // emitting materials. tools/obj_to_scene.py's light_rig and emitter_lights do the same,
 // operation for operation.
-#include "scene/model_lights.h"
+#include "model/model_lights.h"
 
-#include "scene/exact_vectors.h"
+#include "model/exact_vectors.h"
 
 #include <map>
 

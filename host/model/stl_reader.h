@@ -6,7 +6,7 @@
 // for an OBJ file without `vn`. STL has no materials: every face gets the default one.
 #pragma once
 
-#include "scene/obj_model.h"
+#include "model/obj_model.h"
 
 #include <string>
 #include <string_view>

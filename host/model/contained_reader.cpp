@@ -1,6 +1,6 @@
-#include "scene/contained_reader.h"
+#include "model/contained_reader.h"
 
-#include "scene/model_bytes.h"
+#include "model/model_bytes.h"
 #include "scene/scene_error.h"
 
 #include <cerrno>

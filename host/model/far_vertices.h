@@ -2,7 +2,7 @@
 // rule a stray vertex or two cannot move, and what is said of them (docs/models.md).
 #pragma once
 
-#include "scene/obj_model.h"
+#include "model/obj_model.h"
 
 #include <cstdint>
 #include <string>

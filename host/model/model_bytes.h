@@ -3,7 +3,7 @@
 // build, and nothing is kept.
 #pragma once
 
-#include "scene/obj_model.h"
+#include "model/obj_model.h"
 
 #include <string>
 #include <string_view>

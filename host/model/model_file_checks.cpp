@@ -1,4 +1,4 @@
-#include "scene/model_file_checks.h"
+#include "model/model_file_checks.h"
 
 #include <cstdint>
 #include <cstring>

@@ -1,6 +1,6 @@
 // The fit's arithmetic is the same, operation for operation, as tools/obj_to_scene.py's, so
 // that both place a model at the same bits.
-#include "scene/model_fit.h"
+#include "model/model_fit.h"
 
 #include <algorithm>
 #include <cmath>

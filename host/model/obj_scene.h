@@ -3,10 +3,10 @@
 // rule of docs/models.md that tools/obj_to_scene.py follows too, operation for operation.
 #pragma once
 
+#include "model/model_lights.h"
+#include "model/model_view.h"
+#include "model/obj_model.h"
 #include "scene/camera.h"
-#include "scene/model_lights.h"
-#include "scene/model_view.h"
-#include "scene/obj_model.h"
 #include "scene/scene.h"
 
 #include <string>

@@ -7,7 +7,7 @@
 // not an OBJ file.
 #pragma once
 
-#include "scene/obj_model.h"
+#include "model/obj_model.h"
 
 #include <filesystem>
 #include <functional>

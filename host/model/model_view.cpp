@@ -1,6 +1,6 @@
 // The views' turns (model_view.h). tools/obj_to_scene.py computes the same numbers, operation
 // for operation.
-#include "scene/model_view.h"
+#include "model/model_view.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Far positions (far_vertices.h). tools/obj_to_scene.py's far_positions and describe_far
 // do the same, operation for operation.
-#include "scene/far_vertices.h"
+#include "model/far_vertices.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,35 @@
+#include "model/scene_file.h"
+
+#include "model/assimp_model.h"
+#include "model/obj_reader.h"
+#include "model/ply_reader.h"
+#include "model/stl_reader.h"
+#include "scene/file_format.h"
+#include "scene/mapped_file.h"
+#include "scene/scene_error.h"
+#include "scene/scene_loader.h"
+
+#include <cerrno>
+#include <cstring>
+#include <optional>
+#include <string>
+
+Scene loadScene(const std::filesystem::path& path, const ObjSceneSetup& modelSetup) {
+    const std::string name = path.string();
+    std::error_code error;
+    // open succeeds on a directory on Linux and only the read fails; say it plainly.
+    if (std::filesystem::is_directory(path, error))
+        throw SceneError(name, 0, std::string("cannot open file: ") + std::strerror(EISDIR));
+    const MappedFile file(name);
+    const std::optional<OtherFormat> format = otherFileFormat(file.text());
+    if (format == OtherFormat::Ply || (!format && isPlyPath(path)))
+        return sceneFromObj(readPly(file.text(), name), modelSetup, name);
+    if (format == OtherFormat::Stl || (!format && isStlPath(path)))
+        return sceneFromObj(readStl(file.text(), name), modelSetup, name);
+    if (format && *format != OtherFormat::Utf16Text)
+        return sceneFromObj(readAssimpModel(file.text(), path, format), modelSetup, name);
+    if (isObjPath(path)) return sceneFromObj(readObjFile(path, file.text()), modelSetup, name);
+    if (isAssimpPath(path) && !format)
+        return sceneFromObj(readAssimpModel(file.text(), path, std::nullopt), modelSetup, name);
+    return parseScene(file.text(), name);
+}
