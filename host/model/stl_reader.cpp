@@ -150,7 +150,12 @@ void readText(std::string_view bytes, const std::string& fileName, ObjModel& mod
 ObjModel readStl(std::string_view bytes, const std::string& fileName) {
     ObjModel model;
     model.materials.push_back(defaultObjMaterial());
-    const bool text = bytes.substr(0, 5) == "solid" &&
+    // A binary file whose size adds up is binary even when its header starts with "solid"
+    // (as some CAD exporters write it).
+    std::uint32_t count = 0;
+    if (bytes.size() >= 84) std::memcpy(&count, bytes.data() + 80, 4);
+    const bool binarySize = bytes.size() >= 84 && 84 + 50 * std::uint64_t(count) == bytes.size();
+    const bool text = !binarySize && bytes.substr(0, 5) == "solid" &&
                       bytes.substr(0, 1024).find("facet") != std::string_view::npos;
     if (!text && bytes.size() < 84)
         throw SceneError(fileName, 0,

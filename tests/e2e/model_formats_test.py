@@ -107,6 +107,14 @@ class EveryFormatRendersAsTheObj(unittest.TestCase):
                               ("ascii.stl", ["--ascii"]), ("binary.stl", [])):
             with self.subTest(format=name):
                 self.assert_same_image(plain_png, self.render(self.convert(plain, name, *options)))
+        # A binary STL whose 80-byte header starts with "solid" and names a facet, as some
+        # CAD exporters write it, is still binary: its size adds up.
+        with open(os.path.join(OUTPUT, "binary.stl"), "rb") as source:
+            data = source.read()
+        solid = self.write("solid_header.stl", "")
+        with open(solid, "wb") as out:
+            out.write(b"solid part facet normal".ljust(80, b" ") + data[80:])
+        self.assert_same_image(plain_png, self.render(solid))
         for name in ("model.gltf", "model.glb"):
             with self.subTest(format=name):
                 self.assert_same_image(shiny_png, self.render(self.convert(plain, name, *GLTF_MATERIAL)))
