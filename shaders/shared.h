@@ -30,7 +30,8 @@ using uint = std::uint32_t;
 #define MAX_DEPTH 64
 
 // Descriptor set 0. Each scene array has its own binding; all of them are
-// sub-ranges of one device buffer (host/render/scene_upload.cpp lays them out).
+// sub-ranges of one device buffer (host/render/scene_upload.cpp lays them out). What each
+// binding is (its descriptor type, what fills it) is host/render/bindings.cpp's table.
 #define BINDING_OUTPUT_IMAGE 0     // rgba8 storage image the kernel writes
 #define BINDING_SPHERES 1          // vec4 per sphere: centre xyz, radius w
 #define BINDING_SPHERE_MATERIALS 2 // uint per sphere: index into materials
@@ -53,7 +54,6 @@ using uint = std::uint32_t;
 // texel buffers: views of the same ranges (SPEC_TEXEL_READS picks them over the above).
 // On lavapipe a texel fetch is a gather, where a storage-buffer load inside control flow
 // is a loop over the lanes (docs/performance.md).
-#define BINDING_FIRST_TEXEL_BUFFER 10
 #define BINDING_SPHERE_TEXELS 10      // RGBA32F view of BINDING_SPHERES
 #define BINDING_CORNER_TEXELS 11      // RGBA32F view of BINDING_TRIANGLE_CORNERS (not fp64)
 #define BINDING_LAST_VERTEX_TEXELS 12 // R32UI view of BINDING_TRIANGLE_LAST_VERTICES
@@ -62,7 +62,6 @@ using uint = std::uint32_t;
 #define BINDING_MATERIAL_TEXELS 15    // RGBA32F view of BINDING_MATERIALS, 2 texels per material
 #define BINDING_SPHERE_MATERIAL_TEXELS 16 // R32UI view of BINDING_SPHERE_MATERIALS
 #define BINDING_LIGHT_TEXELS 17           // RGBA32F view of BINDING_LIGHTS, 2 texels per light
-#define BINDING_TEXEL_BUFFER_END 18       // one past the last texel buffer
 // The pixel story (docs/pixel_story.md): one GpuPixelStory, written only by the recording
 // kernel (SPEC_RECORD_PIXEL); a host-visible buffer the host reads back.
 #define BINDING_PIXEL_STORY 18

@@ -4,6 +4,7 @@
 #include "base/scope_guard.h"
 #include "gpu/vk_check.h"
 #include "packing/workgroup_order.h"
+#include "render/bindings.h"
 #include "scene/scene_triangles.h"
 #include "shared.h"
 
@@ -33,15 +34,15 @@ VkWriteDescriptorSet descriptorWrite(const Renderer& renderer, std::uint32_t bin
 }
 
 void createDescriptors(Renderer& renderer, const Context& context) {
-    constexpr std::uint32_t texelBuffers = BINDING_TEXEL_BUFFER_END - BINDING_FIRST_TEXEL_BUFFER;
-    VkDescriptorPoolSize sizes[] = {
-        {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
-        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, BINDING_COUNT - 1 - texelBuffers},
-        {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, texelBuffers},
-    };
+    VkDescriptorPoolSize sizes[3];
+    std::uint32_t kinds = 0;
+    for (const VkDescriptorType type :
+         {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+          VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER})
+        if (const std::uint32_t count = bindingsOfType(type)) sizes[kinds++] = {type, count};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = 3;
+    poolInfo.poolSizeCount = kinds;
     poolInfo.pPoolSizes = sizes;
     VK_CHECK(vkCreateDescriptorPool(context.device, &poolInfo, nullptr, &renderer.descriptorPool));
 
@@ -54,16 +55,13 @@ void createDescriptors(Renderer& renderer, const Context& context) {
     // The scene's ranges never change; the output image and the running sum are written by
     // resizeOutput.
     std::vector<VkWriteDescriptorSet> writes;
-    for (std::uint32_t binding = 0; binding < BINDING_COUNT; ++binding) {
-        if (binding == BINDING_OUTPUT_IMAGE || binding == BINDING_ACCUMULATION ||
-            binding == BINDING_PIXEL_STORY || binding == BINDING_KERNEL_STATUS)
-            continue;
-        VkWriteDescriptorSet write = descriptorWrite(renderer, binding);
-        if (binding >= BINDING_FIRST_TEXEL_BUFFER)
-            write.pTexelBufferView =
-                &renderer.scene.texelViews[binding - BINDING_FIRST_TEXEL_BUFFER];
+    for (const BindingInfo& info : kBindings) {
+        if (info.role != BindingRole::SceneArray && info.role != BindingRole::SceneTexels) continue;
+        VkWriteDescriptorSet write = descriptorWrite(renderer, info.binding);
+        if (info.role == BindingRole::SceneTexels)
+            write.pTexelBufferView = &renderer.scene.texelViews[info.binding];
         else
-            write.pBufferInfo = &renderer.scene.ranges[binding];
+            write.pBufferInfo = &renderer.scene.ranges[info.binding];
         writes.push_back(write);
     }
     // The story's buffer: only the recording kernel writes it, but every kernel declares it.

@@ -2,6 +2,7 @@
 
 #include "base/scope_guard.h"
 #include "gpu/vk_check.h"
+#include "render/bindings.h"
 
 #include <algorithm>
 #include <cstring>
@@ -15,47 +16,21 @@ namespace {
 // One array of the scene buffer: its bytes, and how they are written at their place.
 struct ArrayView {
     std::uint32_t binding;
-    const char* name;
     VkDeviceSize bytes;
     std::function<void(void* destination)> write;
 };
 
-template <typename T>
-ArrayView view(std::uint32_t binding, const char* name, const std::vector<T>& values) {
-    return {binding, name, values.size() * sizeof(T), [&values](void* destination) {
+template <typename T> ArrayView view(std::uint32_t binding, const std::vector<T>& values) {
+    return {binding, values.size() * sizeof(T), [&values](void* destination) {
                 std::memcpy(destination, values.data(), values.size() * sizeof(T));
             }};
 }
 
 // A triangle array written from the packed scene where it lands (scene_packing.h).
-ArrayView written(std::uint32_t binding, const char* name, std::size_t bytes,
+ArrayView written(std::uint32_t binding, std::size_t bytes,
                   void (*write)(const PackedScene&, void*), const PackedScene& packed) {
-    return {binding, name, bytes,
-            [write, &packed](void* destination) { write(packed, destination); }};
+    return {binding, bytes, [write, &packed](void* destination) { write(packed, destination); }};
 }
-
-// A texel-buffer view of one storage binding's range: its format and texel size.
-struct TexelView {
-    std::uint32_t binding;
-    std::uint32_t source;
-    VkFormat format;
-    VkDeviceSize texelBytes;
-    bool doublesInFp64; // read from its storage binding in fp64 (shaders/scene_reads.glsl)
-};
-
-// The arrays the kernel reads inside loops (shaders/scene_reads.glsl). R32G32B32A32 and R32
-// formats are ones every Vulkan device supports for uniform texel buffers.
-constexpr TexelView kTexelViews[] = {
-    {BINDING_SPHERE_TEXELS, BINDING_SPHERES, VK_FORMAT_R32G32B32A32_SFLOAT, 16, true},
-    {BINDING_CORNER_TEXELS, BINDING_TRIANGLE_CORNERS, VK_FORMAT_R32G32B32A32_SFLOAT, 16, true},
-    {BINDING_LAST_VERTEX_TEXELS, BINDING_TRIANGLE_LAST_VERTICES, VK_FORMAT_R32_UINT, 4, false},
-    {BINDING_BVH_NODE_TEXELS, BINDING_BVH_NODES, VK_FORMAT_R32G32B32A32_SFLOAT, 16, false},
-    {BINDING_NORMAL_TEXELS, BINDING_VERTEX_NORMALS, VK_FORMAT_R32G32B32A32_SFLOAT, 16, false},
-    {BINDING_MATERIAL_TEXELS, BINDING_MATERIALS, VK_FORMAT_R32G32B32A32_SFLOAT, 16, false},
-    {BINDING_SPHERE_MATERIAL_TEXELS, BINDING_SPHERE_MATERIALS, VK_FORMAT_R32_UINT, 4, false},
-    {BINDING_LIGHT_TEXELS, BINDING_LIGHTS, VK_FORMAT_R32G32B32A32_SFLOAT, 16, false},
-};
-static_assert(std::size(kTexelViews) == BINDING_TEXEL_BUFFER_END - BINDING_FIRST_TEXEL_BUFFER);
 
 VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
     return (value + alignment - 1) / alignment * alignment;
@@ -70,20 +45,17 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
     // buffer's memory: no host copy of them is made.
     const GpuTriangleArrayBytes triangleBytes = gpuTriangleArrayBytes(packed);
     const ArrayView arrays[] = {
-        fp64 ? view(BINDING_SPHERES, "spheres", packed.spheres64)
-             : view(BINDING_SPHERES, "spheres", packed.spheres),
-        view(BINDING_SPHERE_MATERIALS, "sphere materials", packed.sphereMaterials),
-        written(BINDING_TRIANGLE_CORNERS, "triangle corners", triangleBytes.corners,
-                writeTriangleCorners, packed),
-        written(BINDING_TRIANGLE_LAST_VERTICES, "triangles' last vertices",
-                triangleBytes.lastVertices, writeLastVertices, packed),
-        written(BINDING_VERTEX_NORMALS, "vertex normals", triangleBytes.normalsAndMaterials,
-                writeNormalsAndMaterials, packed),
-        view(BINDING_MATERIALS, "materials", packed.materials),
-        view(BINDING_LIGHTS, "lights", packed.lights),
-        view(BINDING_BVH_NODES, "hierarchy nodes", packed.bvhNodes),
-    };
-    // A dvec4 array needs 32-byte alignment; each range may also be a texel buffer's.
+        fp64 ? view(BINDING_SPHERES, packed.spheres64) : view(BINDING_SPHERES, packed.spheres),
+        view(BINDING_SPHERE_MATERIALS, packed.sphereMaterials),
+        written(BINDING_TRIANGLE_CORNERS, triangleBytes.corners, writeTriangleCorners, packed),
+        written(BINDING_TRIANGLE_LAST_VERTICES, triangleBytes.lastVertices, writeLastVertices,
+                packed),
+        written(BINDING_VERTEX_NORMALS, triangleBytes.normalsAndMaterials, writeNormalsAndMaterials,
+                packed),
+        view(BINDING_MATERIALS, packed.materials),
+        view(BINDING_LIGHTS, packed.lights),
+        view(BINDING_BVH_NODES, packed.bvhNodes),
+    }; // A dvec4 array needs 32-byte alignment; each range may also be a texel buffer's.
     const VkPhysicalDeviceLimits& limits = context.properties.limits;
     const VkDeviceSize alignment =
         std::max({VkDeviceSize(fp64 ? 32 : 16), limits.minStorageBufferOffsetAlignment,
@@ -96,15 +68,14 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
     OnFailure release([&] { destroyGpuScene(context, scene); });
     VkDeviceSize size = alignment;
     VkDeviceSize offsets[BINDING_COUNT]{};
-    const char* names[BINDING_COUNT]{}; // each array's name in messages, by storage binding
     for (const ArrayView& array : arrays) {
-        names[array.binding] = array.name;
         if (array.bytes > maxRange)
-            throw std::runtime_error(
-                std::string("the scene's ") + array.name + " take " + std::to_string(array.bytes) +
-                " bytes, more than this device's "
-                "maxStorageBufferRange of " +
-                std::to_string(maxRange) + " bytes (" + context.properties.deviceName + ")");
+            throw std::runtime_error(std::string("the scene's ") + kBindings[array.binding].name +
+                                     " take " + std::to_string(array.bytes) +
+                                     " bytes, more than this device's "
+                                     "maxStorageBufferRange of " +
+                                     std::to_string(maxRange) + " bytes (" +
+                                     context.properties.deviceName + ")");
         offsets[array.binding] = array.bytes ? size : 0;
         size = alignUp(size + array.bytes, alignment);
     }
@@ -129,20 +100,23 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
                                        array.bytes ? array.bytes : 16};
 
     // fp64's doubles stay on the storage path: their views cover the zeroed slot.
-    auto viewed = [&](const TexelView& view) { return !(fp64 && view.doublesInFp64); };
+    auto viewed = [&](const BindingInfo& view) { return !(fp64 && view.doublesInFp64); };
     scene.texelReads = wantTexelReads;
-    for (const TexelView& view : kTexelViews) {
+    for (const BindingInfo& view : kBindings) {
+        if (view.role != BindingRole::SceneTexels) continue;
         const VkDeviceSize texels = scene.ranges[view.source].range / view.texelBytes;
         if (scene.texelReads && viewed(view) && texels > limits.maxTexelBufferElements) {
             scene.texelReads = false;
             scene.storageReadsNote = std::string("Storage-buffer reads: the scene's ") +
-                                     names[view.source] + " take " + std::to_string(texels) +
+                                     kBindings[view.source].name + " take " +
+                                     std::to_string(texels) +
                                      " texels, more than this device's maxTexelBufferElements "
                                      "of " +
                                      std::to_string(limits.maxTexelBufferElements);
         }
     }
-    for (const TexelView& view : kTexelViews) {
+    for (const BindingInfo& view : kBindings) {
+        if (view.role != BindingRole::SceneTexels) continue;
         VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
         info.buffer = scene.buffer.buffer;
         info.format = view.format;
@@ -150,8 +124,8 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
         const bool used = scene.texelReads && viewed(view);
         info.offset = used ? scene.ranges[view.source].offset : 0;
         info.range = used ? scene.ranges[view.source].range : 16;
-        VK_CHECK(vkCreateBufferView(context.device, &info, nullptr,
-                                    &scene.texelViews[view.binding - BINDING_FIRST_TEXEL_BUFFER]));
+        VK_CHECK(
+            vkCreateBufferView(context.device, &info, nullptr, &scene.texelViews[view.binding]));
     }
     scene.bytes = size;
     scene.sphereCount = static_cast<std::uint32_t>(packed.spheres.size());

@@ -15,9 +15,10 @@ struct GpuScene {
     std::uint32_t triangleCount = 0;
     std::uint32_t lightCount = 0;
     glm::vec4 ambient{0.0f};
-    // Uniform texel buffer views for BINDING_FIRST_TEXEL_BUFFER on, always valid: over the
-    // hot arrays when texelReads, else over the zeroed slot (the kernel then never reads them).
-    VkBufferView texelViews[BINDING_TEXEL_BUFFER_END - BINDING_FIRST_TEXEL_BUFFER]{};
+    // By binding number, for the uniform texel buffer bindings (render/bindings.h's
+    // SceneTexels), always valid: over the hot arrays when texelReads, else over the zeroed
+    // slot (the kernel then never reads them). The other entries stay null.
+    VkBufferView texelViews[BINDING_COUNT]{};
     bool texelReads = false;      // the kernel reads the hot arrays through texelViews
     std::string storageReadsNote; // why not, when an array exceeds maxTexelBufferElements
 };

@@ -6,6 +6,7 @@
 #include "gpu/shader_compiler.h"
 #include "gpu/spirv_specializer.h"
 #include "gpu/vk_check.h"
+#include "render/bindings.h"
 #include "render/kernel_sources.h"
 #include "shared.h"
 
@@ -21,10 +22,7 @@
 static_assert(sizeof(TraceSpecialization) == 19 * sizeof(std::uint32_t));
 
 VkDescriptorType bindingDescriptorType(std::uint32_t binding) {
-    if (binding == BINDING_OUTPUT_IMAGE) return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    if (binding >= BINDING_FIRST_TEXEL_BUFFER && binding < BINDING_TEXEL_BUFFER_END)
-        return VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-    return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    return kBindings[binding].type;
 }
 
 std::string precisionPreamble(Precision precision) {

@@ -42,8 +42,7 @@ struct TraceSpecialization {
     VkBool32 countWork = VK_FALSE;
 };
 
-// What each binding of shaders/shared.h is: the output image, a storage buffer, or one of
-// the uniform texel buffers from BINDING_FIRST_TEXEL_BUFFER to BINDING_TEXEL_BUFFER_END.
+// The descriptor type of a binding of shaders/shared.h, as render/bindings.h's table gives it.
 VkDescriptorType bindingDescriptorType(std::uint32_t binding);
 
 // The method choices' part of the specialization (the scene's part is left as given).
