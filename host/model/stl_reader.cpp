@@ -1,5 +1,6 @@
 #include "model/stl_reader.h"
 
+#include "scene/file_format.h"
 #include "scene/scene_error.h"
 
 #include <bit>
@@ -152,10 +153,7 @@ ObjModel readStl(std::string_view bytes, const std::string& fileName) {
     model.materials.push_back(defaultObjMaterial());
     // A binary file whose size adds up is binary even when its header starts with "solid"
     // (as some CAD exporters write it).
-    std::uint32_t count = 0;
-    if (bytes.size() >= 84) std::memcpy(&count, bytes.data() + 80, 4);
-    const bool binarySize = bytes.size() >= 84 && 84 + 50 * std::uint64_t(count) == bytes.size();
-    const bool text = !binarySize && bytes.substr(0, 5) == "solid" &&
+    const bool text = !isBinaryStl(bytes) && bytes.substr(0, 5) == "solid" &&
                       bytes.substr(0, 1024).find("facet") != std::string_view::npos;
     if (!text && bytes.size() < 84)
         throw SceneError(fileName, 0,

@@ -27,14 +27,6 @@ bool isUtf16(std::string_view text) {
     return nulSecond == int(pairs) || nulFirst == int(pairs);
 }
 
-// A binary STL: an 80-byte header, a triangle count, then 50 bytes a triangle, exactly.
-bool isBinaryStl(std::string_view text) {
-    if (text.size() < 84) return false;
-    std::uint32_t triangles = 0;
-    std::memcpy(&triangles, text.data() + 80, 4);
-    return 84 + 50 * std::uint64_t(triangles) == text.size();
-}
-
 std::string lowerExtension(const std::filesystem::path& path) {
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
@@ -43,6 +35,13 @@ std::string lowerExtension(const std::filesystem::path& path) {
 }
 
 } // namespace
+
+bool isBinaryStl(std::string_view text) {
+    if (text.size() < 84) return false;
+    std::uint32_t triangles = 0;
+    std::memcpy(&triangles, text.data() + 80, 4);
+    return 84 + 50 * std::uint64_t(triangles) == text.size();
+}
 
 std::optional<OtherFormat> otherFileFormat(std::string_view text) {
     if (isUtf16(text)) return OtherFormat::Utf16Text;

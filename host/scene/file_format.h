@@ -10,6 +10,10 @@
 
 enum class OtherFormat { Utf16Text, Ply, Stl, Gltf, BinaryGltf };
 
+// Whether the bytes are a binary STL: an 80-byte header, a triangle count, then 50 bytes a
+// triangle, exactly (whatever the header says: some begin it with "solid").
+bool isBinaryStl(std::string_view text);
+
 // One of those, or nothing for anything else (scene text, OBJ text, or other bytes).
 std::optional<OtherFormat> otherFileFormat(std::string_view text);
 
