@@ -2,14 +2,14 @@
 # Usage: tools/fuzz.sh [SECONDS]    (default 60)
 #
 # Fuzzes the scene parser with libFuzzer for a bounded time, then the OBJ model reader
-# for half that time, the models read through assimp (PLY, STL, GLB) and the handed-in
-# image readers (PPM, JPEG markers) for a quarter each; any crash, sanitizer report, leak,
-# hang (-timeout) or out-of-memory
+# for half that time, the other model readers (PLY, STL; GLB through assimp) and the
+# handed-in image readers (PPM, JPEG markers) for a quarter each; any crash, sanitizer
+# report, leak, hang (-timeout) or out-of-memory
 # (-rss_limit_mb, -malloc_limit_mb) fails with libFuzzer's non-zero status and leaves the
 # input that did it in build-fuzz/artifacts/. Commit such an input to
 # tests/fuzz/regressions/ (tests/fuzz/obj_regressions/ for the OBJ reader,
-# tests/fuzz/model_regressions/ for assimp's): the fuzz_replay, obj_fuzz_replay and
-# model_fuzz_replay tests replay them in every build.
+# tests/fuzz/model_regressions/ for the other model readers): the fuzz_replay,
+# obj_fuzz_replay and model_fuzz_replay tests replay them in every build.
 # Seeds: tests/fuzz/seeds/, scenes/, and ../shared/scenes when present (read in place,
 # never copied); for the OBJ reader tests/fuzz/obj_seeds/. New inputs go to
 # build-fuzz/corpus-TARGET/, kept between runs.
@@ -53,8 +53,8 @@ fuzz "scene parser" scene_parser_fuzz "$seconds" tests/fuzz/scene.dict "${seeds[
 # The OBJ reader for half as long: its grammar is smaller.
 fuzz "OBJ model reader" obj_model_fuzz $(((seconds + 1) / 2)) tests/fuzz/obj.dict \
     tests/fuzz/obj_seeds tests/fuzz/obj_regressions
-# The models read through assimp (PLY, STL, GLB) for a quarter of the time.
-fuzz "model readers (assimp)" model_file_fuzz $(((seconds + 3) / 4)) tests/fuzz/model.dict \
+# The other model readers (PLY, STL; GLB through assimp) for a quarter of the time.
+fuzz "model readers (PLY, STL; GLB through assimp)" model_file_fuzz $(((seconds + 3) / 4)) tests/fuzz/model.dict \
     tests/fuzz/model_seeds tests/fuzz/model_regressions
 # The handed-in image readers (PPM, JPEG markers) for a quarter of the time.
 fuzz "image header readers" image_header_fuzz $(((seconds + 3) / 4)) tests/fuzz/image.dict \
