@@ -111,6 +111,7 @@ std::string runBenchmark(const Context& context, Renderer& renderer, HeadlessTar
          << ", \"startup_ms\": " << jsonNumber(startupMs)
          << ", \"parse_ms\": " << jsonNumber(startup.parseMs)
          << ", \"submissions\": " << submissions << ", \"gpu_bytes\": " << renderer.scene.bytes
+         << ", \"texture_bytes\": " << renderer.scene.textureBytes
          << ", \"spheres\": " << renderer.scene.sphereCount
          << ", \"triangles\": " << renderer.scene.triangleCount
          << ", \"lights\": " << renderer.scene.lightCount

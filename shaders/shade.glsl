@@ -1,6 +1,7 @@
 // Surface data at a hit and Phong shading with hard shadows, as docs/model.md defines them.
 // Needs: Ray, Hit (camera.glsl, intersect.glsl), anyHit (bvh.glsl), offsetRayOrigin
-// (ray_offset.glsl), the scene reads (scene_reads.glsl), the story's calls (pixel_story.glsl).
+// (ray_offset.glsl), the scene reads (scene_reads.glsl), the story's calls (pixel_story.glsl),
+// texturedDiffuse (texture.glsl).
 
 // Everything shading needs about a hit point.
 struct SurfacePoint {
@@ -122,6 +123,8 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
         vec4 kdShininess =
             wf.x * ma.diffuseShininess + wf.y * mb.diffuseShininess + wf.z * mc.diffuseShininess;
         s.kd = kdShininess.xyz;
+        if (sceneHasTextures) // a triangle's corners share its material's texture
+            s.kd = texturedDiffuse(s.kd, floatBitsToUint(va.w), v, wf);
         s.shininess = kdShininess.w;
         s.ks = wf.x * ma.specular.xyz + wf.y * mb.specular.xyz + wf.z * mc.specular.xyz;
         // Interpolated as the reference does: each corner's ks times its share.

@@ -68,7 +68,15 @@ using uint = std::uint32_t;
 // What the kernel reports about its own run: one GpuKernelStatus, host-visible, set to zero
 // by the host before a submission and read after it.
 #define BINDING_KERNEL_STATUS 19
-#define BINDING_COUNT 20
+// Textures, bound with content only when the scene has them (SPEC_HAS_TEXTURES; else each is
+// the zeroed slot). Sampled by shaders/texture.glsl.
+#define BINDING_VERTEX_TEXCOORDS 20  // vec2 per vertex: its texture coordinates u, v (v up)
+#define BINDING_MATERIAL_TEXTURES 21 // GpuMaterialTexture per material (materials[]' order)
+#define BINDING_TEXTURE_PIXELS 22    // uint per texel of every texture, RGBA8 (unpackUnorm4x8)
+#define BINDING_TEXCOORD_TEXELS 23   // RG32F view of BINDING_VERTEX_TEXCOORDS
+#define BINDING_MATERIAL_TEXTURE_TEXELS 24 // RGBA32UI view of BINDING_MATERIAL_TEXTURES
+#define BINDING_TEXTURE_PIXEL_TEXELS 25    // R32UI view of BINDING_TEXTURE_PIXELS
+#define BINDING_COUNT 26
 
 // Specialization constant ids (host/render/trace_pipeline.h, TraceSpecialization): bool unless
 // marked uint.
@@ -108,6 +116,8 @@ using uint = std::uint32_t;
 // normals' tangent planes (Hanika, "Hacking the Shadow Terminator", Ray Tracing Gems II):
 // --terminator, on for OBJ models by default, off for scene files.
 #define SPEC_SHIFT_SHADOW_ORIGIN 18
+// bool: some material samples a texture (else texture coordinates and texels are compiled out).
+#define SPEC_HAS_TEXTURES 19
 // The most spheres baked in: the closest-hit loop over them is unrolled, one test each.
 #define MAX_BAKED_SPHERES 15u
 #define RAY_OFFSET_FIXED 0u       // 1e-4 along the normal
@@ -137,6 +147,12 @@ using uint = std::uint32_t;
 struct GpuMaterial {
     vec4 diffuseShininess; // kd in xyz, Phong exponent in w
     vec4 specular;         // ks in xyz; w: the share of ks that is the mirror weight
+};
+
+// Where a material's texture lies in BINDING_TEXTURE_PIXELS. 16 bytes.
+struct GpuMaterialTexture {
+    uvec4 placement; // x: its first texel, y: width, z: height (0: the material has none),
+                     // w unused. Rows top first, each left to right.
 };
 
 // A point light. 32 bytes.

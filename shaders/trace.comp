@@ -28,6 +28,8 @@ layout(constant_id = SPEC_HAS_SPECULAR) const bool sceneHasSpecular = true;
 // Whether some material's mirror share is not 1 (a highlight without a mirror): else the
 // mirror weight is ks itself.
 layout(constant_id = SPEC_HAS_MIRROR_SHARES) const bool sceneHasMirrorShares = true;
+// Whether some material samples a texture (texture.glsl).
+layout(constant_id = SPEC_HAS_TEXTURES) const bool sceneHasTextures = false;
 // Whether shadow rays leave from the hit point moved as Hanika's terminator fix does (shade.glsl).
 layout(constant_id = SPEC_SHIFT_SHADOW_ORIGIN) const bool shiftShadowOrigin = false;
 
@@ -108,6 +110,17 @@ layout(set = 0, binding = BINDING_LIGHTS, std430) readonly buffer LightBuffer {
 layout(set = 0, binding = BINDING_BVH_NODES, std430) readonly buffer BvhNodeBuffer {
     GpuBvhNode bvhNodes[];
 };
+// Textures (texture.glsl), dummies unless sceneHasTextures: per vertex its texture
+// coordinates, per material where its texture lies, and every texture's RGBA8 texels.
+layout(set = 0, binding = BINDING_VERTEX_TEXCOORDS, std430) readonly buffer TexcoordBuffer {
+    vec2 vertexTexcoords[];
+};
+layout(set = 0, binding = BINDING_MATERIAL_TEXTURES, std430) readonly buffer MaterialTextureBuffer {
+    GpuMaterialTexture materialTextures[];
+};
+layout(set = 0, binding = BINDING_TEXTURE_PIXELS, std430) readonly buffer TexturePixelBuffer {
+    uint texturePixels[];
+};
 // The window's running sum of each pixel's samples (see GpuFrameParams.dispatch); a dummy
 // when tracing in one pass.
 layout(set = 0, binding = BINDING_ACCUMULATION, std430) buffer AccumulationBuffer {
@@ -132,6 +145,7 @@ layout(set = 0, binding = BINDING_PIXEL_STORY, std430) buffer PixelStoryBuffer {
 #include "intersect.glsl"
 #include "bvh.glsl"
 #include "pixel_story.glsl"
+#include "texture.glsl"
 #include "shade.glsl"
 
 // Colour seen along a primary ray: the model's recursion

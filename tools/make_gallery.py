@@ -10,7 +10,9 @@ here from formulas (none copied from elsewhere): a (3,2) torus-knot tube of quad
 facets), a vase turned from a profile, written z-up as CAD and Blender models
 often are (vase.obj), a flat star (star.obj), a long pencil (pencil.obj) and a
 scanned-looking stone with vertex colours (rock.obj, also written as binary PLY,
-rock.ply, by tools/convert_model.py). Then renders each with Raytracer, straight
+rock.ply, by tools/convert_model.py) and a banded gas giant, a sphere with texture
+coordinates and a 512x256 texture of its own (planet.obj with planet.png, also written
+as GLB with the texture inside it, planet.glb). Then renders each with Raytracer, straight
 from the model file (framed, on a floor, lit: docs/models.md), to
 --images/gallery-NAME.png, and prints each command. Deterministic; standard
 library only.
@@ -21,6 +23,9 @@ import math
 import os
 import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
+from png_write import write_png  # noqa: E402
 
 FMT = "%.6f"
 
@@ -40,6 +45,60 @@ def write_model(folder, name, positions, faces, material, colours=None):
         out.write("usemtl %s\n" % name)
         for face in faces:
             out.write("f %s\n" % " ".join(str(i + 1) for i in face))
+
+
+def planet_texture(width=512, height=256):
+    """Rows of a gas giant's texture: bands of cream, tan and rust by latitude, their edges
+    waved by longitude, and one oval storm."""
+    bands = [(0.93, 0.87, 0.74), (0.80, 0.62, 0.45), (0.91, 0.80, 0.62), (0.66, 0.42, 0.30),
+             (0.95, 0.90, 0.80), (0.75, 0.55, 0.40), (0.88, 0.76, 0.60)]
+    rows = []
+    for y in range(height):
+        row = []
+        for x in range(width):
+            u, v = (x + 0.5) / width, (y + 0.5) / height
+            wave = 0.015 * math.sin(2 * math.pi * (3 * u + 5 * v)) + 0.008 * math.sin(2 * math.pi * (11 * u - 2 * v))
+            t = (v + wave) * len(bands)
+            i, f = int(t) % len(bands), t - math.floor(t)
+            a, b = bands[i], bands[(i + 1) % len(bands)]
+            blend = max(0.0, min(1.0, (f - 0.8) / 0.2))
+            colour = [a[k] * (1 - blend) + b[k] * blend for k in range(3)]
+            du, dv = (u - 0.62) / 0.07, (v - 0.62) / 0.035
+            storm = math.exp(-(du * du + dv * dv))
+            colour = [colour[0] * (1 - storm) + 0.75 * storm, colour[1] * (1 - storm) + 0.32 * storm,
+                      colour[2] * (1 - storm) + 0.22 * storm]
+            row.append(tuple(int(round(255 * c)) for c in colour))
+        rows.append(row)
+    return rows
+
+
+def write_planet(folder, rings=48, sides=96):
+    """planet.obj: a unit sphere of rings x sides quads (triangles at the poles), each
+    corner with texture coordinates (u round it, v up it; the seam's column twice, at u 0
+    and 1), its material's map_Kd planet.png (planet_texture)."""
+    with open(os.path.join(folder, "planet.mtl"), "w") as out:
+        out.write("newmtl planet\nKd 0.8 0.8 0.8\nKs 0.05 0.05 0.05\nNs 10\nillum 2\nmap_Kd planet.png\n")
+    rows = planet_texture()
+    write_png(os.path.join(folder, "planet.png"), len(rows[0]), len(rows), rows)
+    with open(os.path.join(folder, "planet.obj"), "w") as out:
+        out.write("# made by tools/make_gallery.py\nmtllib planet.mtl\n")
+        for r in range(rings + 1):
+            theta = math.pi * r / rings
+            for s in range(sides + 1):
+                phi = 2 * math.pi * s / sides
+                out.write("v %s\n" % " ".join(FMT % c for c in (
+                    math.sin(theta) * math.cos(phi), math.cos(theta), -math.sin(theta) * math.sin(phi))))
+                out.write("vt %s %s\n" % (FMT % (s / sides), FMT % (1 - r / rings)))
+        out.write("usemtl planet\n")
+        for r in range(rings):
+            for s in range(sides):
+                a, b = r * (sides + 1) + s + 1, (r + 1) * (sides + 1) + s + 1
+                corners = [(a, a), (b, b), (b + 1, b + 1), (a + 1, a + 1)]
+                if r == 0:
+                    corners = corners[:3]  # a and a + 1 are the north pole
+                elif r == rings - 1:
+                    corners = [corners[0], corners[1], corners[3]]  # b and b + 1 the south pole
+                out.write("f %s\n" % " ".join("%d/%d" % c for c in corners))
 
 
 def knot(segments=240, sides=16, radius=0.35):
@@ -178,8 +237,11 @@ MODELS = {
     # rendered from the PLY file (which holds no material: the default one, and its colours).
     "rock": (rock, {"Kd": (0.75, 0.75, 0.75), "Ks": (0.1, 0.1, 0.1), "Ns": 30}, []),
 }
-# The models rendered from another format than their OBJ file: name -> extension.
-CONVERTED = {"rock": ".ply"}
+# Written by its own function (with a texture), not write_model: name -> (writer, options).
+TEXTURED = {"planet": (write_planet, [])}
+# The models rendered from another format than their OBJ file: name -> (extension, options
+# of tools/convert_model.py).
+CONVERTED = {"rock": (".ply", []), "planet": (".glb", ["--texture", "planet.png"])}
 
 
 def main(argv=None):
@@ -193,14 +255,21 @@ def main(argv=None):
     args = parser.parse_args(argv)
     os.makedirs(args.models, exist_ok=True)
     os.makedirs(args.images, exist_ok=True)
-    for name, (make, material, options) in MODELS.items():
-        made = make()
-        write_model(args.models, name, made[0], made[1], material, made[2] if len(made) > 2 else None)
+    models = {name: (make, material, options) for name, (make, material, options) in MODELS.items()}
+    models.update({name: (None, None, options) for name, (_, options) in TEXTURED.items()})
+    for name, (make, material, options) in models.items():
+        if make:
+            made = make()
+            write_model(args.models, name, made[0], made[1], material, made[2] if len(made) > 2 else None)
+        else:
+            TEXTURED[name][0](args.models)
         model = os.path.join(args.models, name + ".obj")
         if name in CONVERTED:
-            converted = os.path.join(args.models, name + CONVERTED[name])
+            extension, convert_options = CONVERTED[name]
+            converted = os.path.join(args.models, name + extension)
             convert = [sys.executable, os.path.join(os.path.dirname(os.path.abspath(__file__)), "convert_model.py"),
-                       model, converted]
+                       model, converted,
+                       *[os.path.join(args.models, o) if o.endswith(".png") else o for o in convert_options]]
             print(" ".join(convert[1:]))
             if subprocess.run(convert).returncode != 0:
                 return 1

@@ -237,6 +237,7 @@ class Model:
         self.position_lines = []  # each position's v line, for messages
         self.colors = []  # (r, g, b) or None, per position
         self.normals = []  # vn, as given
+        self.texcoords = 0  # how many vt lines
         self.faces = []  # the position indices of each polygon, for smooth normals
         self.triangles = []  # ((position, normal or None) x 3, material, line)
         self.skipped = 0
@@ -253,7 +254,8 @@ def resolve(path, line, text, count, what):
     resolved = index - 1 if index > 0 else count + index
     if not 0 <= resolved < count:
         raise ConversionError(path, line, "%s index %d is out of range: %d %s defined so far" % (
-            what, index, count, "vertex positions" if what == "vertex" else "normals"))
+            what, index, count,
+            {"vertex": "vertex positions", "normal": "normals"}.get(what, "texture coordinates")))
     return resolved
 
 
@@ -329,6 +331,8 @@ def parse_corner(path, line, token, model):
     if len(parts) > 3 or not parts[0]:
         raise ConversionError(path, line, "face corner '%s' is not v, v/vt, v/vt/vn or v//vn" % token)
     position = resolve(path, line, parts[0], len(model.positions), "vertex")
+    if len(parts) >= 2 and parts[1]:
+        resolve(path, line, parts[1], model.texcoords, "texture coordinate")
     normal = None
     if len(parts) == 3 and parts[2]:
         normal = resolve(path, line, parts[2], len(model.normals), "normal")
@@ -397,6 +401,9 @@ def read_obj(path, warn):
             model.colors.append(tuple(clamp(c, 0.0, 1.0) for c in values[3:6]) if len(values) >= 6 else None)
         elif keyword == "vn":
             model.normals.append(tuple(numbers(path, line, args, 3, "vn")))
+        elif keyword == "vt":
+            numbers(path, line, args, 1, "vt", 2)
+            model.texcoords += 1  # a scene holds no textures: only their count, for the checks
         elif keyword == "f":
             if len(args) < 3:
                 raise ConversionError(path, line, "a face needs at least 3 corners, got %d" % len(args))
@@ -434,8 +441,8 @@ def read_obj(path, warn):
                 warn("%s:%d: warning: unknown material '%s'; default material used" % (path, line, name))
             if material is None:
                 material = DEFAULT_MATERIAL
-        elif keyword in ("vt", "vp", "o", "g", "s"):
-            pass  # texture coordinates, object and group names, smoothing groups
+        elif keyword in ("vp", "o", "g", "s"):
+            pass  # parameter-space vertices, object and group names, smoothing groups
         elif keyword not in ignored:
             ignored.add(keyword)
             warn("%s:%d: warning: '%s' statements are ignored" % (path, line, keyword))

@@ -4,10 +4,12 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 #include <unistd.h>
+#include <utility>
 
 // stb is third-party code written for C; its warnings are not ours to fix.
 #pragma GCC diagnostic push
@@ -27,6 +29,8 @@
 #define STBI_ONLY_PNG
 #define STBI_ONLY_JPEG
 #define STBI_ONLY_PNM
+#define STBI_ONLY_BMP
+#define STBI_ONLY_TGA
 #define STBI_FAILURE_USERMSG
 #include <stb/stb_image.h>
 #define STB_IMAGE_WRITE_STATIC
@@ -95,6 +99,25 @@ Image8 readImage8(const std::filesystem::path& path) {
     return image;
 }
 
+namespace {
+
+// A PNG's size as its header states it: stb refuses a PNG over 2^30 bytes of pixels with
+// the same words as a file of no known type, which would hide why.
+std::optional<std::pair<std::uint32_t, std::uint32_t>>
+pngHeaderSize(const std::vector<std::uint8_t>& bytes) {
+    static const std::uint8_t signature[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (bytes.size() < 24 || std::memcmp(bytes.data(), signature, 8) != 0 ||
+        std::memcmp(bytes.data() + 12, "IHDR", 4) != 0)
+        return std::nullopt;
+    auto bigEndian = [&](std::size_t at) {
+        return std::uint32_t(bytes[at]) << 24 | std::uint32_t(bytes[at + 1]) << 16 |
+               std::uint32_t(bytes[at + 2]) << 8 | std::uint32_t(bytes[at + 3]);
+    };
+    return std::pair(bigEndian(16), bigEndian(20));
+}
+
+} // namespace
+
 Image8 decodeImage8(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes,
                     int maxSide) {
     if (bytes.size() > std::size_t(std::numeric_limits<int>::max()))
@@ -102,14 +125,23 @@ Image8 decodeImage8(const std::filesystem::path& path, const std::vector<std::ui
     const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
     const int size = int(bytes.size());
     int width = 0, height = 0, channels = 0;
+    const auto tooLarge = [&](std::uint64_t w, std::uint64_t h) {
+        fail(path, "the image is " + std::to_string(w) + "x" + std::to_string(h) + ", over " +
+                       std::to_string(maxSide) + " pixels a side");
+    };
+    if (const auto stated = pngHeaderSize(bytes);
+        stated &&
+        (stated->first > std::uint32_t(maxSide) || stated->second > std::uint32_t(maxSide)))
+        tooLarge(stated->first, stated->second);
     if (!stbi_info_from_memory(data, size, &width, &height, &channels))
-        fail(path, std::string("not a readable PNG or JPEG: ") + stbi_failure_reason());
-    if (width > maxSide || height > maxSide)
-        fail(path, "the image is " + std::to_string(width) + "x" + std::to_string(height) +
-                       ", over " + std::to_string(maxSide) + " pixels a side");
+        fail(path,
+             std::string("not a readable PNG, JPEG, BMP or TGA image: ") + stbi_failure_reason());
+    if (width > maxSide || height > maxSide) tooLarge(width, height);
     std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
         stbi_load_from_memory(data, size, &width, &height, &channels, 4), &stbi_image_free);
-    if (!pixels) fail(path, std::string("not a readable PNG or JPEG: ") + stbi_failure_reason());
+    if (!pixels)
+        fail(path,
+             std::string("not a readable PNG, JPEG, BMP or TGA image: ") + stbi_failure_reason());
     Image8 image;
     image.width = width;
     image.height = height;

@@ -2,6 +2,7 @@
 
 #include "model/contained_reader.h"
 #include "model/model_file_checks.h"
+#include "model/model_paths.h"
 #include "model/polygon_triangulation.h"
 #include "scene/scene_error.h"
 
@@ -26,11 +27,12 @@ namespace {
 // metallic-roughness material (glTF) a highlight of the dielectric 0.04 blended towards the
 // base colour by metallic, faded by roughness, its exponent 2 / roughness^4 - 2; another a
 // specular colour and exponent as given; exponents clamped as MTL's Ns; no mirror.
-MeshMaterial materialFrom(const aiMaterial& source, std::map<std::string, std::size_t>& counted) {
+MeshMaterial materialFrom(const aiMaterial& source, const std::string& modelFile,
+                          std::map<std::string, std::size_t>& counted) {
     MeshMaterial material = defaultObjMaterial();
     aiColor4D colour;
-    if (source.Get(AI_MATKEY_BASE_COLOR, colour) == AI_SUCCESS ||
-        source.Get(AI_MATKEY_COLOR_DIFFUSE, colour) == AI_SUCCESS)
+    const bool baseColour = source.Get(AI_MATKEY_BASE_COLOR, colour) == AI_SUCCESS;
+    if (baseColour || source.Get(AI_MATKEY_COLOR_DIFFUSE, colour) == AI_SUCCESS)
         material.phong.diffuse = glm::clamp(glm::dvec3(colour.r, colour.g, colour.b), 0.0, 1.0);
     ai_real metallic = 0, roughness = 1, shininess = 0;
     if (source.Get(AI_MATKEY_METALLIC_FACTOR, metallic) == AI_SUCCESS) {
@@ -57,8 +59,12 @@ MeshMaterial materialFrom(const aiMaterial& source, std::map<std::string, std::s
     aiString texture;
     if (source.GetTexture(aiTextureType_BASE_COLOR, 0, &texture) == AI_SUCCESS ||
         source.GetTexture(aiTextureType_DIFFUSE, 0, &texture) == AI_SUCCESS) {
-        material.diffuseTexture = texture.C_Str();
-        ++counted["texture maps (diffuse, base colour)"];
+        // A name of the file's own textures ("*0") as it is; a file's from the model's folder.
+        const std::string named = texture.C_Str();
+        material.diffuseTexture = named.starts_with('*') ? named : besideFile(modelFile, named);
+        // glTF's base colour is its factor times the texture; other formats' diffuse colour
+        // is what the texture takes the place of, as MTL's Kd.
+        if (baseColour) material.textureFactor = material.phong.diffuse;
     }
     // A value that is not finite (a damaged file) falls back to the default material's.
     const MeshMaterial fallback = defaultObjMaterial();
@@ -70,6 +76,7 @@ MeshMaterial materialFrom(const aiMaterial& source, std::map<std::string, std::s
     if (!std::isfinite(material.phong.shininess))
         material.phong.shininess = fallback.phong.shininess;
     if (!finite(material.emission)) material.emission = fallback.emission;
+    if (!finite(material.textureFactor)) material.textureFactor = fallback.textureFactor;
     ai_real opacity = 1;
     if (source.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity < 1)
         ++counted["transparency"];
@@ -141,7 +148,15 @@ ObjModel readInThisProcess(std::string_view bytes, const std::filesystem::path& 
     // Material i of the file is model material i + 1 (0 is the default one).
     model.materials.push_back(defaultObjMaterial());
     for (unsigned i = 0; i < scene->mNumMaterials; ++i)
-        model.materials.push_back(materialFrom(*scene->mMaterials[i], model.notRendered));
+        model.materials.push_back(materialFrom(*scene->mMaterials[i], name, model.notRendered));
+    // The file's own images, as the bytes of their files (PNG, JPEG); an image stored as raw
+    // texels (mHeight > 0, rare) is left out and then named as not read.
+    for (unsigned i = 0; i < scene->mNumTextures; ++i) {
+        const aiTexture& texture = *scene->mTextures[i];
+        if (texture.mHeight == 0 && texture.pcData)
+            model.embeddedTextures["*" + std::to_string(i)] =
+                std::string(reinterpret_cast<const char*>(texture.pcData), texture.mWidth);
+    }
     std::unordered_map<PositionKey, std::uint32_t, PositionKeyHash> positionOf;
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
         const aiMesh& mesh = *scene->mMeshes[m];
@@ -189,6 +204,17 @@ ObjModel readInThisProcess(std::string_view bytes, const std::filesystem::path& 
             for (unsigned v = 0; v < mesh.mNumVertices; ++v)
                 model.normals.emplace_back(mesh.mNormals[v].x, mesh.mNormals[v].y,
                                            mesh.mNormals[v].z);
+        // Texture coordinates as given (v up: assimp turns glTF's v down to it), unless one is
+        // not finite: then the mesh has none.
+        const std::uint32_t texcoordBase = static_cast<std::uint32_t>(model.texcoords.size());
+        bool texcoords = mesh.HasTextureCoords(0);
+        for (unsigned v = 0; texcoords && v < mesh.mNumVertices; ++v)
+            texcoords = std::isfinite(mesh.mTextureCoords[0][v].x) &&
+                        std::isfinite(mesh.mTextureCoords[0][v].y);
+        if (texcoords)
+            for (unsigned v = 0; v < mesh.mNumVertices; ++v)
+                model.texcoords.emplace_back(mesh.mTextureCoords[0][v].x,
+                                             mesh.mTextureCoords[0][v].y);
         const std::uint32_t material = mesh.mMaterialIndex + 1;
         for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
             const aiFace& face = mesh.mFaces[f];
@@ -200,6 +226,7 @@ ObjModel readInThisProcess(std::string_view bytes, const std::filesystem::path& 
                 ObjCorner corner;
                 corner.position = position[v];
                 if (normals) corner.normal = normalBase + v;
+                if (texcoords) corner.texcoord = texcoordBase + v;
                 corners.push_back(corner);
                 points.push_back(model.positions[corner.position]);
                 model.facePositions.push_back(corner.position);

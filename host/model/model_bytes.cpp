@@ -79,6 +79,7 @@ std::string modelBytes(const ObjModel& model) {
     out.array(model.positionLines);
     out.array(model.colors);
     out.array(model.normals);
+    out.array(model.texcoords);
     out.array(model.facePositions);
     out.array(model.faceStarts);
     out.array(model.triangles);
@@ -86,7 +87,13 @@ std::string modelBytes(const ObjModel& model) {
     for (const MeshMaterial& material : model.materials) {
         out.value(material.phong);
         out.text(material.diffuseTexture);
+        out.value(material.textureFactor);
         out.value(material.emission);
+    }
+    out.value<std::uint64_t>(model.embeddedTextures.size());
+    for (const auto& [textureName, bytes] : model.embeddedTextures) {
+        out.text(textureName);
+        out.text(bytes);
     }
     out.value<std::uint64_t>(model.warnings.size());
     for (const std::string& warning : model.warnings)
@@ -106,14 +113,21 @@ ObjModel modelFromBytes(std::string_view bytes) {
     model.positionLines = in.array<std::int64_t>();
     model.colors = in.array<std::optional<glm::dvec3>>();
     model.normals = in.array<glm::dvec3>();
+    model.texcoords = in.array<glm::dvec2>();
     model.facePositions = in.array<std::uint32_t>();
     model.faceStarts = in.array<std::size_t>();
     model.triangles = in.array<ObjTriangle>();
-    model.materials.resize(in.count(sizeof(Material) + 8 + sizeof(glm::dvec3)));
+    model.materials.resize(in.count(sizeof(Material) + 8 + 2 * sizeof(glm::dvec3)));
     for (MeshMaterial& material : model.materials) {
         material.phong = in.value<Material>();
         material.diffuseTexture = in.text();
+        material.textureFactor = in.value<glm::dvec3>();
         material.emission = in.value<glm::dvec3>();
+    }
+    const std::uint64_t embedded = in.count(16);
+    for (std::uint64_t i = 0; i < embedded; ++i) {
+        std::string textureName = in.text();
+        model.embeddedTextures[textureName] = in.text();
     }
     model.warnings.resize(in.count(8));
     for (std::string& warning : model.warnings)
@@ -136,7 +150,8 @@ ObjModel modelFromBytes(std::string_view bytes) {
     for (const ObjTriangle& t : model.triangles) {
         for (const ObjCorner& corner : t.corners)
             check(corner.position < model.positions.size() &&
-                  (!corner.normal || *corner.normal < model.normals.size()));
+                  (!corner.normal || *corner.normal < model.normals.size()) &&
+                  (corner.texcoord == kNoTexcoord || corner.texcoord < model.texcoords.size()));
         check(t.material < model.materials.size() && t.face + 1 < model.faceStarts.size());
     }
     return model;

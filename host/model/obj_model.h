@@ -11,10 +11,14 @@
 #include <string>
 #include <vector>
 
-// One corner of a face: indices into ObjModel's positions and normals (0-based).
+// A corner's texcoord when its face gives none.
+inline constexpr std::uint32_t kNoTexcoord = UINT32_MAX;
+
+// One corner of a face: indices into ObjModel's positions, normals and texcoords (0-based).
 struct ObjCorner {
     std::uint32_t position = 0;
     std::optional<std::uint32_t> normal; // none: the corner gets a smooth normal
+    std::uint32_t texcoord = kNoTexcoord;
 };
 
 // A triangle of a face's fan (a polygon is split from its first corner).
@@ -30,7 +34,8 @@ struct ObjModel {
     std::vector<std::int64_t> positionLines; // each position's `v` line, for messages
     // `v x y z r g b` (a common extension): the vertex's diffuse colour, clamped to [0, 1].
     std::vector<std::optional<glm::dvec3>> colors;
-    std::vector<glm::dvec3> normals; // vn, as given
+    std::vector<glm::dvec3> normals;   // vn, as given
+    std::vector<glm::dvec2> texcoords; // vt's u and v (a third value, w, is not kept)
     // Each face's position indices, whole (smooth normals are taken per polygon): face f's
     // are facePositions[faceStarts[f]] up to facePositions[faceStarts[f + 1]], in one array
     // rather than a vector per face (which cost 56 bytes a face before its indices).
@@ -38,8 +43,11 @@ struct ObjModel {
     std::vector<std::size_t> faceStarts{0};
     std::vector<ObjTriangle> triangles;
     // materials[0] is the default one, for faces without a known material; each with the
-    // diffuse texture its map_Kd names, if any.
+    // diffuse texture its map_Kd names, if any (the path from the MTL file's folder).
     std::vector<MeshMaterial> materials;
+    // Textures the model file holds itself (GLB's embedded images), by the name its materials
+    // give them (diffuseTexture, "*0" for the first): each an image file's bytes.
+    std::map<std::string, std::string> embeddedTextures;
     std::vector<std::string> warnings; // "file:line: warning: ..."
     // What the material libraries hold that the shading model does not render, for --check:
     // "texture maps (map_Kd)", "transparency (d, Tr)", "other maps (bump, map_Ks, ...)", each

@@ -3,6 +3,7 @@
 // can be held to each other (tests/tools/obj_to_scene_test.py).
 #include "model/obj_reader.h"
 
+#include "model/model_paths.h"
 #include "model/polygon_triangulation.h"
 #include "scene/file_format.h"
 #include "scene/mapped_file.h"
@@ -168,10 +169,9 @@ void readMtl(const MtlFile& file, ObjModel& model, std::map<std::string, std::ui
                        : 0.0;
         };
         std::string what;
-        if (keyword == "map_Kd")
-            what = "texture maps (map_Kd)";
-        else if ((keyword == "d" && statement.words.size() > 1 && value(1) < 1.0) ||
-                 (keyword == "Tr" && value(1) > 0.0))
+        if (keyword == "map_Kd") return; // sampled (model/texture_files.h)
+        if ((keyword == "d" && statement.words.size() > 1 && value(1) < 1.0) ||
+            (keyword == "Tr" && value(1) > 0.0))
             what = "transparency (d, Tr)";
         else if (keyword.starts_with("map_") || keyword == "bump" || keyword == "disp" ||
                  keyword == "decal" || keyword == "refl" || keyword == "norm")
@@ -228,7 +228,9 @@ void readMtl(const MtlFile& file, ObjModel& model, std::map<std::string, std::ui
                                std::string(statement.words[1]));
                 illumOf[*current] = static_cast<int>(illum);
             } else if (keyword == "map_Kd" && current) {
-                model.materials[*current].diffuseTexture = textureFileName(statement);
+                const std::string texture = textureFileName(statement);
+                model.materials[*current].diffuseTexture =
+                    texture.empty() ? texture : besideFile(file.path, texture);
             }
             // Ka, d, Tr, Ni, other maps: nothing in this renderer's model uses them.
         } catch (const SceneError& error) {
@@ -272,7 +274,10 @@ std::uint32_t resolveIndex(const Place& place, std::string_view word, std::size_
     if (huge || resolved < 0 || resolved >= static_cast<long long>(count))
         place.fail(what + " index " + (huge ? std::string(digits) : std::to_string(index)) +
                    " is out of range: " + std::to_string(count) + " " +
-                   (what == "vertex" ? "vertex positions" : "normals") + " defined so far");
+                   (what == "vertex"   ? "vertex positions"
+                    : what == "normal" ? "normals"
+                                       : "texture coordinates") +
+                   " defined so far");
     return static_cast<std::uint32_t>(resolved);
 }
 
@@ -288,14 +293,12 @@ ObjCorner parseCorner(const Place& place, std::string_view word, const ObjModel&
         place.fail("face corner '" + std::string(word) + "' is not v, v/vt, v/vt/vn or v//vn");
     ObjCorner corner;
     corner.position = resolveIndex(place, parts[0], model.positions.size(), "vertex");
+    if (parts.size() >= 2 && !parts[1].empty())
+        corner.texcoord =
+            resolveIndex(place, parts[1], model.texcoords.size(), "texture coordinate");
     if (parts.size() == 3 && !parts[2].empty())
         corner.normal = resolveIndex(place, parts[2], model.normals.size(), "normal");
     return corner;
-}
-
-std::string directoryOf(const std::string& path) {
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    return parent.empty() ? std::string() : parent.string();
 }
 
 } // namespace
@@ -336,6 +339,9 @@ ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlL
         } else if (keyword == "vn") {
             const std::vector<double> values = numbers(place, statement, 3, "vn");
             model.normals.emplace_back(values[0], values[1], values[2]);
+        } else if (keyword == "vt") {
+            const std::vector<double> values = numbers(place, statement, 1, "vt", 2);
+            model.texcoords.emplace_back(values[0], values.size() > 1 ? values[1] : 0.0);
         } else if (keyword == "f") {
             const std::size_t count = statement.words.size() - 1;
             if (count < 3)
@@ -379,9 +385,8 @@ ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlL
             if (found == names.end() && missingLibraries.empty())
                 model.warnings.push_back(at + "warning: unknown material '" + name +
                                          "'; default material used");
-        } else if (keyword == "vt" || keyword == "vp" || keyword == "o" || keyword == "g" ||
-                   keyword == "s") {
-            // texture coordinates, object and group names, smoothing groups
+        } else if (keyword == "vp" || keyword == "o" || keyword == "g" || keyword == "s") {
+            // parameter-space vertices, object and group names, smoothing groups
         } else if (ignored.insert(std::string(keyword)).second) {
             model.warnings.push_back(at + "warning: '" + std::string(keyword) +
                                      "' statements are ignored");

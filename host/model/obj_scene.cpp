@@ -294,11 +294,12 @@ std::optional<std::string> lyingDown(const ModelPlacement& model) {
            "one, give --up z";
 }
 
-// A model's corner as a mesh vertex: its position and its normal, bit for bit, so that
-// corners that agree on both share a vertex (and its colour, which goes with the position).
+// A model's corner as a mesh vertex: its position, its texture coordinates' index and its
+// normal, bit for bit, so that corners that agree on all three share a vertex (and its
+// colour, which goes with the position).
 struct CornerKey {
     std::uint32_t position = 0;
-    std::uint32_t padding = 0; // zero, so equal keys have equal bytes
+    std::uint32_t texcoord = kNoTexcoord;
     glm::dvec3 normal{0.0};
 };
 
@@ -365,6 +366,7 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
             const ObjCorner& corner = source.corners[k];
             CornerKey key;
             key.position = corner.position;
+            key.texcoord = corner.texcoord;
             if (!corner.normal && !smooth)
                 smooth.emplace(model, positions, setup.creaseDegrees, farFaces);
             key.normal =
@@ -374,6 +376,10 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
             if (corners.size() == before) continue; // a vertex already made
             mesh.positions.push_back(place(positions[corner.position]));
             mesh.normals.push_back(placement.turn.apply(key.normal)); // turned with the model
+            if (!model.texcoords.empty())
+                mesh.texcoords.push_back(corner.texcoord == kNoTexcoord
+                                             ? glm::dvec2(0.0)
+                                             : model.texcoords[corner.texcoord]);
             if (anyColor) {
                 const auto& color = model.colors[corner.position];
                 mesh.colors.push_back(color ? glm::dvec4(*color, 1.0) : glm::dvec4(0.0));

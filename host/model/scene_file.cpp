@@ -4,6 +4,7 @@
 #include "model/obj_reader.h"
 #include "model/ply_reader.h"
 #include "model/stl_reader.h"
+#include "model/texture_files.h"
 #include "scene/file_format.h"
 #include "scene/mapped_file.h"
 #include "scene/scene_error.h"
@@ -14,6 +15,17 @@
 #include <optional>
 #include <string>
 
+namespace {
+
+// A model made a scene, with the textures it names.
+Scene sceneFromModel(const ObjModel& model, const ObjSceneSetup& setup, const std::string& name) {
+    Scene scene = sceneFromObj(model, setup, name);
+    loadTextures(scene, name, model.embeddedTextures);
+    return scene;
+}
+
+} // namespace
+
 Scene loadScene(const std::filesystem::path& path, const ObjSceneSetup& modelSetup) {
     const std::string name = path.string();
     std::error_code error;
@@ -23,13 +35,13 @@ Scene loadScene(const std::filesystem::path& path, const ObjSceneSetup& modelSet
     const MappedFile file(name);
     const std::optional<OtherFormat> format = otherFileFormat(file.text());
     if (format == OtherFormat::Ply || (!format && isPlyPath(path)))
-        return sceneFromObj(readPly(file.text(), name), modelSetup, name);
+        return sceneFromModel(readPly(file.text(), name), modelSetup, name);
     if (format == OtherFormat::Stl || (!format && isStlPath(path)))
-        return sceneFromObj(readStl(file.text(), name), modelSetup, name);
+        return sceneFromModel(readStl(file.text(), name), modelSetup, name);
     if (format && *format != OtherFormat::Utf16Text)
-        return sceneFromObj(readAssimpModel(file.text(), path, format), modelSetup, name);
-    if (isObjPath(path)) return sceneFromObj(readObjFile(path, file.text()), modelSetup, name);
+        return sceneFromModel(readAssimpModel(file.text(), path, format), modelSetup, name);
+    if (isObjPath(path)) return sceneFromModel(readObjFile(path, file.text()), modelSetup, name);
     if (isAssimpPath(path) && !format)
-        return sceneFromObj(readAssimpModel(file.text(), path, std::nullopt), modelSetup, name);
+        return sceneFromModel(readAssimpModel(file.text(), path, std::nullopt), modelSetup, name);
     return parseScene(file.text(), name);
 }

@@ -18,6 +18,7 @@
 // The C++ mirror must have exactly the std430 layout the shader reads.
 static_assert(sizeof(gpu::GpuMaterial) == 32);
 static_assert(sizeof(gpu::GpuLight) == 32);
+static_assert(sizeof(gpu::GpuMaterialTexture) == 16);
 static_assert(sizeof(gpu::GpuBvhNode) == 64, "one node per 64-byte cache line");
 static_assert(offsetof(gpu::GpuBvhNode, leftMax) == 16);
 static_assert(offsetof(gpu::GpuBvhNode, rightMinAndRef) == 32);
@@ -38,14 +39,45 @@ gpu::GpuMaterial toGpuMaterial(const Material& material) {
             toVec4(material.specular, material.mirror)};
 }
 
+// A material as the GPU stores it, the unit of material deduplication: its Phong terms and
+// its texture (zero when it has none).
+struct PackedMaterial {
+    gpu::GpuMaterial phong;
+    gpu::GpuMaterialTexture texture;
+};
+
 // A vertex as the GPU stores it, the unit of vertex deduplication.
 struct PackedVertex {
     glm::vec4 position;
     glm::vec4 normal;
     std::uint32_t material;
     std::uint32_t padding;    // zero, so equal vertices have equal bytes
+    glm::vec2 texcoord;       // zero when the scene has no textures
     glm::dvec4 exactPosition; // fp64: the position in double; fp32: zero
 };
+
+// Each texture's place in the texel array (GpuMaterialTexture), by Scene::textures' index;
+// the texels themselves go into pixels.
+std::vector<gpu::GpuMaterialTexture> packTextures(const std::vector<Texture>& textures,
+                                                  std::vector<std::uint32_t>& pixels) {
+    std::vector<gpu::GpuMaterialTexture> placements;
+    std::size_t total = 0;
+    for (const Texture& texture : textures)
+        total += std::size_t(texture.image.width) * std::size_t(texture.image.height);
+    if (total > UINT32_MAX)
+        throw std::runtime_error("the scene's textures hold " + std::to_string(total) +
+                                 " texels, more than a 32-bit index reaches");
+    pixels.reserve(total);
+    for (const Texture& texture : textures) {
+        placements.push_back(
+            {glm::uvec4(pixels.size(), texture.image.width, texture.image.height, 0u)});
+        const std::vector<std::uint8_t>& rgba = texture.image.rgba;
+        for (std::size_t i = 0; i + 4 <= rgba.size(); i += 4) // R in the low byte: unpackUnorm4x8
+            pixels.push_back(std::uint32_t(rgba[i]) | std::uint32_t(rgba[i + 1]) << 8 |
+                             std::uint32_t(rgba[i + 2]) << 16 | std::uint32_t(rgba[i + 3]) << 24);
+    }
+    return placements;
+}
 
 } // namespace
 
@@ -53,12 +85,17 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
     const bool fp64 = precision == Precision::Fp64;
     PackedScene packed;
     packed.ambient = toVec4(scene.ambient);
-    Deduplicator<gpu::GpuMaterial> materials(packed.materials, 64);
+    const std::vector<gpu::GpuMaterialTexture> texturePlacements =
+        packTextures(scene.textures, packed.texturePixels);
+    const bool textured = !scene.textures.empty();
+    std::vector<PackedMaterial> packedMaterials;
+    Deduplicator<PackedMaterial> materials(packedMaterials, 64);
     // Neighbouring vertices often share a material: compare with the last one first.
-    gpu::GpuMaterial lastMaterial{};
+    PackedMaterial lastMaterial{};
     std::uint32_t lastMaterialIndex = UINT32_MAX;
-    auto materialIndex = [&](const Material& material) {
-        const gpu::GpuMaterial packedMaterial = toGpuMaterial(material);
+    auto materialIndex = [&](const Material& material, std::int64_t texture) {
+        PackedMaterial packedMaterial{toGpuMaterial(material), {}};
+        if (texture >= 0) packedMaterial.texture = texturePlacements[std::size_t(texture)];
         if (lastMaterialIndex == UINT32_MAX ||
             std::memcmp(&packedMaterial, &lastMaterial, sizeof lastMaterial) != 0) {
             lastMaterial = packedMaterial;
@@ -71,7 +108,7 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
     packed.sphereMaterials.reserve(scene.spheres.size());
     for (const Sphere& sphere : scene.spheres) {
         packed.spheres.push_back(toVec4(sphere.center, sphere.radius));
-        packed.sphereMaterials.push_back(materialIndex(sphere.material));
+        packed.sphereMaterials.push_back(materialIndex(sphere.material, -1));
         if (fp64) packed.spheres64.push_back(glm::dvec4(sphere.center, sphere.radius));
     }
 
@@ -87,12 +124,13 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
     std::vector<std::uint32_t> cornersOfTriangles;
     cornersOfTriangles.reserve(3 * triangles);
     packed.triangles.reserve(triangles);
-    auto packCorner = [&](const glm::dvec3& position, const glm::dvec3& normal,
-                          const Material& material) {
+    auto packCorner = [&](const Vertex& vertex, std::int64_t texture) {
+        const glm::dvec3& position = vertex.position;
         PackedVertex packedVertex{};
         packedVertex.position = toVec4(position);
-        packedVertex.normal = toVec4(normal);
-        packedVertex.material = materialIndex(material);
+        packedVertex.normal = toVec4(vertex.normal);
+        packedVertex.material = materialIndex(vertex.material, texture);
+        if (textured) packedVertex.texcoord = glm::vec2(vertex.texcoord);
         if (fp64) packedVertex.exactPosition = glm::dvec4(position, 0.0);
         // The position the GPU computes with: rounded to float in fp32.
         const glm::dvec3 corner = fp64 ? position : glm::dvec3(glm::vec3(position));
@@ -102,18 +140,20 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
     for (const Triangle& triangle : scene.triangles) {
         glm::uvec4 packedTriangle(0u);
         for (int k = 0; k < 3; ++k) {
-            const Vertex& vertex = triangle.vertices[k];
-            packedTriangle[k] = packCorner(vertex.position, vertex.normal, vertex.material);
+            packedTriangle[k] = packCorner(triangle.vertices[k], triangle.texture);
         }
         packed.triangles.push_back(packedTriangle);
     }
     for (const Mesh& mesh : scene.meshes) {
         for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
             glm::uvec4 packedTriangle(0u);
+            const auto texture = triangleTexture(mesh, t);
             for (int k = 0; k < 3; ++k) {
                 const std::uint32_t v = mesh.triangles[t][k];
                 packedTriangle[k] =
-                    packCorner(mesh.positions[v], mesh.normals[v], cornerMaterial(mesh, t, v));
+                    packCorner(Vertex{mesh.positions[v], mesh.normals[v],
+                                      cornerMaterial(mesh, t, v), vertexTexcoord(mesh, v)},
+                               texture ? std::int64_t(*texture) : -1);
             }
             packed.triangles.push_back(packedTriangle);
         }
@@ -134,6 +174,11 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
         if (fp64)
             packed.vertexPositions64.push_back(
                 glm::dvec4(glm::dvec3(vertex.exactPosition), double(vertex.material)));
+        if (textured) packed.vertexTexcoords.push_back(vertex.texcoord);
+    }
+    for (const PackedMaterial& material : packedMaterials) {
+        packed.materials.push_back(material.phong);
+        if (textured) packed.materialTextures.push_back(material.texture);
     }
 
     packed.lights = packLights(scene.lights);

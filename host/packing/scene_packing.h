@@ -39,6 +39,12 @@ struct PackedScene {
     std::vector<gpu::GpuMaterial> materials; // each distinct material once
     std::vector<gpu::GpuLight> lights;
     std::vector<gpu::GpuBvhNode> bvhNodes; // empty: the shader tests every primitive
+    // Only when the scene has textures (else all three empty): per vertex its texture
+    // coordinates, per material where its texture lies (width 0: none), and every texture's
+    // texels, RGBA8 in a uint each, texture after texture.
+    std::vector<glm::vec2> vertexTexcoords;
+    std::vector<gpu::GpuMaterialTexture> materialTextures;
+    std::vector<std::uint32_t> texturePixels;
     glm::vec4 ambient{0.0f};
     // --precision fp64 only (else empty): the same spheres and vertex positions in double,
     // which the GPU then gets instead of the float ones; a position's w is its material

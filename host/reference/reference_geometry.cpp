@@ -76,6 +76,26 @@ bool hitTriangle(const RefTriangle& tri, const Ray& ray, double tMax, double& t,
     return true;
 }
 
+// The texture's colour at uv (docs/models.md): u across from the left edge, v up from the
+// bottom, each wrapped to [0, 1); bilinear between the four nearest texel centres, which
+// lie at (i + 0.5) / size, wrapping at the edges; each texel's rgb / 255.
+dvec3 textureColor(const Image8& image, glm::dvec2 uv) {
+    const double u = uv.x - std::floor(uv.x), v = uv.y - std::floor(uv.y);
+    const double x = u * image.width - 0.5, y = (1.0 - v) * image.height - 0.5;
+    const double left = std::floor(x), top = std::floor(y);
+    const double fx = x - left, fy = y - top;
+    auto wrap = [](double i, int size) { return (int(i) % size + size) % size; };
+    const int x0 = wrap(left, image.width), x1 = (x0 + 1) % image.width;
+    const int y0 = wrap(top, image.height), y1 = (y0 + 1) % image.height;
+    auto texel = [&](int i, int j) {
+        const std::uint8_t* p = &image.rgba[(std::size_t(j) * std::size_t(image.width) + i) * 4];
+        return dvec3(p[0], p[1], p[2]) / 255.0;
+    };
+    const dvec3 upper = texel(x0, y0) * (1 - fx) + texel(x1, y0) * fx;
+    const dvec3 lower = texel(x0, y1) * (1 - fx) + texel(x1, y1) * fx;
+    return upper * (1 - fy) + lower * fy;
+}
+
 } // namespace
 
 bool closestHit(const World& world, const Ray& ray, Hit& hit, const HitRules& rules) {
@@ -138,6 +158,10 @@ SurfacePoint surfaceAt(const World& world, const Ray& ray, const Hit& hit) {
         p.material.specular = w.x * m0.specular + w.y * m1.specular + w.z * m2.specular;
         p.material.shininess = w.x * m0.shininess + w.y * m1.shininess + w.z * m2.shininess;
         p.mirrorWeight = w.x * mirrorWeight(m0) + w.y * mirrorWeight(m1) + w.z * mirrorWeight(m2);
+        if (tri.texture >= 0) // the material's kd then multiplies the texture's colour
+            p.material.diffuse *=
+                textureColor(world.scene.textures[std::size_t(tri.texture)].image,
+                             w.x * v[0].texcoord + w.y * v[1].texcoord + w.z * v[2].texcoord);
         p.shadowPoint = p.position;
         if (world.shiftShadowOrigin) {
             const double facing = glm::dot(p.normal, ray.dir) > 0 ? -1.0 : 1.0;

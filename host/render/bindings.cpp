@@ -6,8 +6,8 @@ constexpr BindingInfo array(std::uint32_t binding, const char* name) {
     return {binding, BindingRole::SceneArray, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, name};
 }
 
-// R32G32B32A32 and R32 formats are ones every Vulkan device supports for uniform texel
-// buffers.
+// R32G32B32A32, R32G32 and R32 formats (float and uint) are ones every Vulkan device
+// supports for uniform texel buffers.
 constexpr BindingInfo texels(std::uint32_t binding, std::uint32_t source, VkFormat format,
                              std::uint32_t texelBytes, bool doublesInFp64) {
     return {binding,
@@ -27,6 +27,8 @@ constexpr BindingInfo own(std::uint32_t binding, BindingRole role, VkDescriptorT
 
 constexpr VkFormat kVec4 = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkFormat kUint = VK_FORMAT_R32_UINT;
+constexpr VkFormat kVec2 = VK_FORMAT_R32G32_SFLOAT;
+constexpr VkFormat kUvec4 = VK_FORMAT_R32G32B32A32_UINT;
 
 constexpr std::array<BindingInfo, BINDING_COUNT> table() {
     std::array<BindingInfo, BINDING_COUNT> bindings{{
@@ -54,6 +56,12 @@ constexpr std::array<BindingInfo, BINDING_COUNT> table() {
             "pixel story"),
         own(BINDING_KERNEL_STATUS, BindingRole::KernelStatus, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
             "kernel status"),
+        array(BINDING_VERTEX_TEXCOORDS, "texture coordinates"),
+        array(BINDING_MATERIAL_TEXTURES, "materials' textures"),
+        array(BINDING_TEXTURE_PIXELS, "texture pixels"),
+        texels(BINDING_TEXCOORD_TEXELS, BINDING_VERTEX_TEXCOORDS, kVec2, 8, false),
+        texels(BINDING_MATERIAL_TEXTURE_TEXELS, BINDING_MATERIAL_TEXTURES, kUvec4, 16, false),
+        texels(BINDING_TEXTURE_PIXEL_TEXELS, BINDING_TEXTURE_PIXELS, kUint, 4, false),
     }};
     return bindings;
 }

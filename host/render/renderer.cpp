@@ -141,6 +141,7 @@ TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderS
     specialization.hasMirrorShares =
         specialization.hasMirrors && std::any_of(materials.begin(), materials.end(), shares);
     specialization.shiftShadowOrigin = settings.terminatorFix && specialization.hasTriangles;
+    specialization.hasTextures = !packed.materialTextures.empty() && specialization.hasTriangles;
     if (settings.generalKernel) {
         // Every content-dependent part stays in: the kernel any scene could run. The
         // spheres' and triangles' loops still stop at their counts (0 for an absent kind),
@@ -148,6 +149,7 @@ TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderS
         specialization.hasSpheres = specialization.hasTriangles = VK_TRUE;
         specialization.hasSpecular = specialization.hasMirrors = VK_TRUE;
         specialization.hasMirrorShares = VK_TRUE;
+        specialization.hasTextures = VK_TRUE; // every material's texture width is 0 without
     }
     // A small scene's spheres baked in (shaders/baked_spheres.glsl): on the brute-force path
     // only, and not for the general kernel, whose point is to run any scene.
@@ -198,7 +200,12 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
         renderer.pipeline = loadTracePipeline(context, source, renderer.specialization, precision);
     }
     const std::size_t primitives = renderer.scene.sphereCount + renderer.scene.triangleCount;
-    if (primitives > 0)
+    if (primitives > 0 && renderer.scene.textureBytes > 0)
+        note("Scene memory: %llu bytes, %.1f bytes per primitive; textures %llu of them\n",
+             static_cast<unsigned long long>(renderer.scene.bytes),
+             double(renderer.scene.bytes) / double(primitives),
+             static_cast<unsigned long long>(renderer.scene.textureBytes));
+    else if (primitives > 0)
         note("Scene memory: %llu bytes, %.1f bytes per primitive\n",
              static_cast<unsigned long long>(renderer.scene.bytes),
              double(renderer.scene.bytes) / double(primitives));

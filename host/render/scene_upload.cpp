@@ -55,6 +55,9 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
         view(BINDING_MATERIALS, packed.materials),
         view(BINDING_LIGHTS, packed.lights),
         view(BINDING_BVH_NODES, packed.bvhNodes),
+        view(BINDING_VERTEX_TEXCOORDS, packed.vertexTexcoords),
+        view(BINDING_MATERIAL_TEXTURES, packed.materialTextures),
+        view(BINDING_TEXTURE_PIXELS, packed.texturePixels),
     }; // A dvec4 array needs 32-byte alignment; each range may also be a texel buffer's.
     const VkPhysicalDeviceLimits& limits = context.properties.limits;
     const VkDeviceSize alignment =
@@ -128,6 +131,10 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
             vkCreateBufferView(context.device, &info, nullptr, &scene.texelViews[view.binding]));
     }
     scene.bytes = size;
+    for (const ArrayView& array : arrays)
+        if (array.binding == BINDING_VERTEX_TEXCOORDS ||
+            array.binding == BINDING_MATERIAL_TEXTURES || array.binding == BINDING_TEXTURE_PIXELS)
+            scene.textureBytes += array.bytes;
     scene.sphereCount = static_cast<std::uint32_t>(packed.spheres.size());
     scene.triangleCount = static_cast<std::uint32_t>(packed.triangles.size());
     scene.lightCount = static_cast<std::uint32_t>(packed.lights.size());

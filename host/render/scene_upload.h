@@ -11,6 +11,7 @@ struct GpuScene {
     Buffer buffer;
     VkDescriptorBufferInfo ranges[BINDING_COUNT]{}; // BINDING_OUTPUT_IMAGE's entry unused
     VkDeviceSize bytes = 0;                         // device memory holding the scene
+    VkDeviceSize textureBytes = 0; // of which textures: texels, placements, texture coordinates
     std::uint32_t sphereCount = 0;
     std::uint32_t triangleCount = 0;
     std::uint32_t lightCount = 0;

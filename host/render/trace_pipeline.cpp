@@ -19,7 +19,7 @@
 #include <string>
 
 // Hashed as bytes for the pipeline cache's key: no padding may hide in it.
-static_assert(sizeof(TraceSpecialization) == 19 * sizeof(std::uint32_t));
+static_assert(sizeof(TraceSpecialization) == 20 * sizeof(std::uint32_t));
 
 VkDescriptorType bindingDescriptorType(std::uint32_t binding) {
     return kBindings[binding].type;
@@ -66,6 +66,7 @@ std::vector<VkSpecializationMapEntry> specializationMapEntries() {
             {SPEC_HAS_SPECULAR, offsetof(S, hasSpecular), sizeof(VkBool32)},
             {SPEC_HAS_MIRROR_SHARES, offsetof(S, hasMirrorShares), sizeof(VkBool32)},
             {SPEC_SHIFT_SHADOW_ORIGIN, offsetof(S, shiftShadowOrigin), sizeof(VkBool32)},
+            {SPEC_HAS_TEXTURES, offsetof(S, hasTextures), sizeof(VkBool32)},
             {SPEC_TEXEL_READS, offsetof(S, texelReads), sizeof(VkBool32)},
             {SPEC_BAKED_SPHERES, offsetof(S, bakedSpheres), sizeof(VkBool32)},
             {SPEC_BAKED_SPHERE_COUNT, offsetof(S, bakedSphereCount), sizeof(std::uint32_t)},

@@ -25,6 +25,7 @@ struct TraceSpecialization {
     VkBool32 hasSpecular = VK_TRUE; // some material has ks > 0: the Phong highlight
     // Some material's mirror share is not 1: the mirror weight is ks times it (else ks).
     VkBool32 hasMirrorShares = VK_TRUE;
+    VkBool32 hasTextures = VK_TRUE; // some material samples a texture (SPEC_HAS_TEXTURES)
     // Shadow rays from the shifted point (--terminator, SPEC_SHIFT_SHADOW_ORIGIN).
     VkBool32 shiftShadowOrigin = VK_FALSE;
     VkBool32 texelReads = VK_TRUE; // hot arrays through texel buffers (else storage buffers)

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "scene/mesh.h"
+#include "scene/texture.h"
 
 #include <glm/glm.hpp>
 
@@ -28,11 +29,15 @@ struct Vertex {
     glm::dvec3 position{0.0};
     glm::dvec3 normal{0.0}; // as given; may be unnormalised or zero
     Material material;
+    glm::dvec2 texcoord{0.0}; // a model's (Mesh::texcoords); a scene file has none
 };
 
 struct Triangle {
     Vertex vertices[3];
     std::int64_t line = 0;
+    // A model's triangle with a textured material: Scene::textures' index (the vertices'
+    // material.diffuse then multiplies the texture's colour, mesh.h); -1: none.
+    std::int64_t texture = -1;
 };
 
 struct Light {
@@ -81,6 +86,8 @@ struct Scene {
     std::optional<LightRigAnchor> lightRig;
     // Set for an OBJ model: where it was placed (ModelPlacement).
     std::optional<ModelPlacement> model;
+    // The textures models' materials sample (MeshMaterial::texture), decoded.
+    std::vector<Texture> textures;
     // Accepted oddities ("file:line: warning: ..."), printed by the caller.
     std::vector<std::string> warnings;
 };

@@ -15,9 +15,10 @@ Triangle meshTriangle(const Mesh& mesh, std::size_t t) {
     triangle.line = mesh.triangleLines[t];
     for (int k = 0; k < 3; ++k) {
         const std::uint32_t v = mesh.triangles[t][k];
-        triangle.vertices[k] =
-            Vertex{mesh.positions[v], mesh.normals[v], cornerMaterial(mesh, t, v)};
+        triangle.vertices[k] = Vertex{mesh.positions[v], mesh.normals[v],
+                                      cornerMaterial(mesh, t, v), vertexTexcoord(mesh, v)};
     }
+    if (const auto texture = triangleTexture(mesh, t)) triangle.texture = *texture;
     return triangle;
 }
 

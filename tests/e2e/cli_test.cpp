@@ -404,6 +404,7 @@ TEST(CommandLine, BenchPrintsOneJsonLineWithEveryKey) {
                             "\"gpu_ms_median\"",
                             "\"startup_ms\"",
                             "\"gpu_bytes\"",
+                            "\"texture_bytes\": 0",
                             "\"parse_ms\"",
                             "\"submissions\"",
                             "\"sampler\": \"r2\"",

@@ -204,7 +204,11 @@ class ObjToScene(unittest.TestCase):
             "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n": ":4: error: vertex index -4 is out of range",
             "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n": ":4: error: vertex index 0",
             "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//1 2 3\n": ":4: error: normal index 1 is out of range: 0",
-            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/a 2 3x\n": ":4: error: vertex index '3x' is not a whole number",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3x\n": ":4: error: vertex index '3x' is not a whole number",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/a 2 3\n": ":4: error: texture coordinate index 'a' is not a whole number",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/2 3/1\n":
+                ":5: error: texture coordinate index 2 is out of range: 1 texture coordinates defined so far",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0 0 0\nf 1 2 3\n": ":4: error: vt expects 1 to 3 numbers, got 4",
             "# nothing\n": ": error: no faces (f) found",
         }
         for number, (obj, message) in enumerate(cases.items()):
