@@ -51,22 +51,23 @@ def planet_texture(width=512, height=256):
     """Rows of a gas giant's texture: bands of cream, tan and rust by latitude, their edges
     waved by longitude, and one oval storm."""
     bands = [(0.93, 0.87, 0.74), (0.80, 0.62, 0.45), (0.91, 0.80, 0.62), (0.66, 0.42, 0.30),
-             (0.95, 0.90, 0.80), (0.75, 0.55, 0.40), (0.88, 0.76, 0.60)]
+             (0.95, 0.90, 0.80), (0.75, 0.55, 0.40), (0.88, 0.76, 0.60), (0.60, 0.40, 0.30),
+             (0.94, 0.88, 0.76), (0.78, 0.60, 0.46), (0.90, 0.82, 0.66), (0.70, 0.50, 0.36)]
     rows = []
     for y in range(height):
         row = []
         for x in range(width):
             u, v = (x + 0.5) / width, (y + 0.5) / height
-            wave = 0.015 * math.sin(2 * math.pi * (3 * u + 5 * v)) + 0.008 * math.sin(2 * math.pi * (11 * u - 2 * v))
+            wave = 0.006 * math.sin(2 * math.pi * (4 * u + 9 * v)) + 0.004 * math.sin(2 * math.pi * (13 * u - 3 * v))
             t = (v + wave) * len(bands)
             i, f = int(t) % len(bands), t - math.floor(t)
             a, b = bands[i], bands[(i + 1) % len(bands)]
             blend = max(0.0, min(1.0, (f - 0.8) / 0.2))
             colour = [a[k] * (1 - blend) + b[k] * blend for k in range(3)]
-            du, dv = (u - 0.62) / 0.07, (v - 0.62) / 0.035
+            du, dv = (u - 0.86) / 0.045, (v - 0.36) / 0.03
             storm = math.exp(-(du * du + dv * dv))
-            colour = [colour[0] * (1 - storm) + 0.75 * storm, colour[1] * (1 - storm) + 0.32 * storm,
-                      colour[2] * (1 - storm) + 0.22 * storm]
+            colour = [colour[0] * (1 - storm) + 0.82 * storm, colour[1] * (1 - storm) + 0.24 * storm,
+                      colour[2] * (1 - storm) + 0.14 * storm]
             row.append(tuple(int(round(255 * c)) for c in colour))
         rows.append(row)
     return rows
