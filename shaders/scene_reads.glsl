@@ -19,6 +19,10 @@ layout(set = 0, binding = BINDING_MATERIAL_TEXELS) uniform samplerBuffer materia
 layout(set = 0,
        binding = BINDING_SPHERE_MATERIAL_TEXELS) uniform usamplerBuffer sphereMaterialTexels;
 layout(set = 0, binding = BINDING_LIGHT_TEXELS) uniform samplerBuffer lightTexels;
+layout(set = 0, binding = BINDING_TEXCOORD_TEXELS) uniform samplerBuffer texcoordTexels;
+layout(set = 0,
+       binding = BINDING_MATERIAL_TEXTURE_TEXELS) uniform usamplerBuffer materialTextureTexels;
+layout(set = 0, binding = BINDING_TEXTURE_PIXEL_TEXELS) uniform usamplerBuffer texturePixelTexels;
 
 // Sphere i: centre xyz, radius w.
 rvec4 fetchSphere(uint i) {
@@ -90,4 +94,23 @@ GpuLight fetchLight(uint i) {
         return GpuLight(texelFetch(lightTexels, int(2u * i)),
                         texelFetch(lightTexels, int(2u * i + 1u)));
     return lights[i];
+}
+
+// Vertex v's texture coordinates.
+vec2 fetchTexcoord(uint v) {
+    if (texelReads) return texelFetch(texcoordTexels, int(v)).xy;
+    return vertexTexcoords[v];
+}
+
+// Where material i's texture lies: first texel, width, height (0: none).
+uvec4 fetchMaterialTexture(uint i) {
+    if (texelReads) return texelFetch(materialTextureTexels, int(i));
+    return materialTextures[i].placement;
+}
+
+// Texel (x, y) of the texture at placement, x and y already wrapped, as rgb in [0, 1].
+vec3 fetchTexel(uvec4 placement, uint x, uint y) {
+    uint i = placement.x + y * placement.y + x;
+    uint packed = texelReads ? texelFetch(texturePixelTexels, int(i)).x : texturePixels[i];
+    return unpackUnorm4x8(packed).rgb;
 }

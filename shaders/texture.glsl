@@ -5,31 +5,7 @@
 // when sceneHasTextures (trace.comp). Filtering is done here rather than by a sampler:
 // Vulkan lets a device's bilinear weights be as coarse as 1/16 (subTexelPrecisionBits 4),
 // which would part the image from the reference's by more than the tests allow.
-// Needs: the texture storage bindings and texelReads (trace.comp).
-
-layout(set = 0, binding = BINDING_TEXCOORD_TEXELS) uniform samplerBuffer texcoordTexels;
-layout(set = 0,
-       binding = BINDING_MATERIAL_TEXTURE_TEXELS) uniform usamplerBuffer materialTextureTexels;
-layout(set = 0, binding = BINDING_TEXTURE_PIXEL_TEXELS) uniform usamplerBuffer texturePixelTexels;
-
-// Vertex v's texture coordinates.
-vec2 fetchTexcoord(uint v) {
-    if (texelReads) return texelFetch(texcoordTexels, int(v)).xy;
-    return vertexTexcoords[v];
-}
-
-// Where material i's texture lies: first texel, width, height (0: none).
-uvec4 fetchMaterialTexture(uint i) {
-    if (texelReads) return texelFetch(materialTextureTexels, int(i));
-    return materialTextures[i].placement;
-}
-
-// Texel (x, y) of the texture at placement, x and y already wrapped, as rgb in [0, 1].
-vec3 fetchTexel(uvec4 placement, uint x, uint y) {
-    uint i = placement.x + y * placement.y + x;
-    uint packed = texelReads ? texelFetch(texturePixelTexels, int(i)).x : texturePixels[i];
-    return unpackUnorm4x8(packed).rgb;
-}
+// Needs: fetchTexcoord, fetchMaterialTexture and fetchTexel (scene_reads.glsl).
 
 // The texture's colour at uv: u across from the left edge, v up from the bottom, each
 // wrapped to [0, 1); texel centres at (i + 0.5) / size.

@@ -3,6 +3,7 @@
 
     python3 tools/make_mesh.py --shape torus --triangles 2000 --out FILE
     python3 tools/make_mesh.py --shape knot --triangles 1000000 --out knot.obj
+    python3 tools/make_mesh.py --shape knot --triangles 100000 --out knot.obj --texture checker.png
 
 Shapes: torus, sphere (UV sphere), knot (a (p,q) torus-knot tube). Every
 vertex carries its exact analytic surface normal, so the mesh shades smoothly.
@@ -13,6 +14,10 @@ grid can make (see --triangles). An --out name ending in .obj writes the mesh
 alone as Wavefront OBJ (v, vn and f lines; with --color ramp each v carries
 its colour as `v x y z r g b`): Raytracer then adds the floor and lights of a
 model (docs/models.md), so the ground, spheres and lights are not written.
+With --texture IMAGE.png (OBJ of a torus or knot only) it also writes a 1024x1024
+checkerboard PNG there, NAME.mtl whose one material has it as map_Kd, and `vt`
+texture coordinates (u along the shape's length, repeated so the checks stay
+square, v around it) that faces name as v/vt/vn.
 
 Deterministic (no randomness, no clock), standard library only, O(N) time and
 memory in the number of vertices, and it prints nothing but errors. Numbers
@@ -21,6 +26,7 @@ are written with %.9g, enough for single precision to read them back exactly.
 
 import argparse
 import math
+import os
 import sys
 
 FMT = "%.9g"
@@ -86,7 +92,7 @@ def torus(n, major=1.0, minor=0.4):
             pos.append((r * cu, minor * sv, r * su))
             nor.append((nx, ny, nz))
             par.append(i / nu)
-    return pos, nor, par, grid_triangles(nu, nv, True)
+    return pos, nor, par, grid_triangles(nu, nv, True), (nu, nv)
 
 
 def uv_sphere(n):
@@ -120,7 +126,7 @@ def uv_sphere(n):
             c, d = ring(k + 1, i + 1), ring(k + 1, i)
             tris.append((a, b, c))
             tris.append((a, c, d))
-    return pos, nor, par, tris
+    return pos, nor, par, tris, None
 
 
 def knot(n, p=2, q=3, major=0.75, amp=0.35, tube=0.16):
@@ -160,7 +166,7 @@ def knot(n, p=2, q=3, major=0.75, amp=0.35, tube=0.16):
             pos.append((c[0] + tube * nrm[0], c[1] + tube * nrm[1], c[2] + tube * nrm[2]))
             nor.append(nrm)
             par.append(i / nu)
-    return pos, nor, par, grid_triangles(nu, nv, True)
+    return pos, nor, par, grid_triangles(nu, nv, True), (nu, nv)
 
 
 SHAPES = {"torus": torus, "sphere": uv_sphere, "knot": knot}
@@ -210,6 +216,8 @@ def parse_args(argv):
     ap.add_argument("--specular", type=float, default=0.25,
                     help="mesh spe (grey); also its mirror weight (default 0.25)")
     ap.add_argument("--shininess", type=float, default=40.0)
+    ap.add_argument("--texture", metavar="IMAGE.png",
+                    help="OBJ of a torus or knot: texture coordinates and a checkerboard map_Kd written there")
     ap.add_argument("--bare", action="store_true",
                     help="only the mesh and two lights: no ground, no extra spheres")
     a = ap.parse_args(argv)
@@ -221,22 +229,69 @@ def parse_args(argv):
         ap.error("--specular must be within [0, 1]")
     if not a.shininess >= 0.0:
         ap.error("--shininess must not be negative")
+    if a.texture and (a.shape == "sphere" or not a.out.lower().endswith(".obj")):
+        ap.error("--texture needs a torus or knot written as OBJ")
     return a
 
 
-def write_obj(path, positions, normals, colors, triangles):
-    """The mesh as OBJ: one v (with its colour, if any) and one vn per vertex, one f each."""
+def grid_texcoords(triangles, grid):
+    """vt lines of a wrapping nu x nv grid's (nu + 1) x (nv + 1) corners, the seams' twice,
+    and each triangle's three vt indices (0-based): u = i / nu times the repeats that keep
+    a check square, v = j / nv."""
+    nu, nv = grid
+    repeats = max(1, round(nu / nv))
+    lines = ["vt %s %s\n" % (fmt(repeats * i / nu), fmt(j / nv)) for i in range(nu + 1) for j in range(nv + 1)]
+    uvs = []
+    for tri in triangles:
+        ij = [(t // nv, t % nv) for t in tri]
+        # A triangle across a seam names the far side's column (row) as nu (nv), not 0.
+        wrap_i = max(i for i, _ in ij) - min(i for i, _ in ij) > 1
+        wrap_j = max(j for _, j in ij) - min(j for _, j in ij) > 1
+        uvs.append(tuple((nu if wrap_i and i == 0 else i) * (nv + 1) + (nv if wrap_j and j == 0 else j)
+                         for i, j in ij))
+    return lines, uvs
+
+
+def write_texture(obj_path, image_path):
+    """The checkerboard PNG at image_path and the MTL beside obj_path naming it; returns the
+    OBJ's mtllib and usemtl lines."""
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
+    from png_write import write_png
+    size, check = 1024, 32
+    rows = [[(230, 200, 120) if (x // check + y // check) % 2 else (40, 90, 160) for x in range(size)]
+            for y in range(size)]
+    write_png(image_path, size, size, rows)
+    mtl = os.path.splitext(obj_path)[0] + ".mtl"
+    with open(mtl, "w") as out:
+        out.write("newmtl checker\nKd 0.8 0.8 0.8\nKs 0.25 0.25 0.25\nNs 40\nillum 2\nmap_Kd %s\n"
+                  % os.path.relpath(image_path, os.path.dirname(os.path.abspath(obj_path))))
+    return "mtllib %s\nusemtl checker\n" % os.path.basename(mtl)
+
+
+def write_obj(path, positions, normals, colors, triangles, texcoords=None):
+    """The mesh as OBJ: one v (with its colour, if any) and one vn per vertex, one f each;
+    with texcoords (grid_texcoords' vt lines and indices), f's corners are v/vt/vn and the
+    header names the material (write_texture's lines)."""
     with open(path, "w", newline="\n") as out:
         out.write("# %d triangles, written by tools/make_mesh.py\n" % len(triangles))
+        if texcoords:
+            out.write(texcoords[2])
         chunk = []
         for k, p in enumerate(positions):
             colour = " " + vec(colors[k]) if colors else ""
             chunk.append("v %s%s\n" % (vec(p), colour))
         chunk.extend("vn %s\n" % vec(n) for n in normals)
+        if texcoords:
+            chunk.extend(texcoords[0])
         out.writelines(chunk)
         chunk = []
-        for (i, j, k) in triangles:
-            chunk.append("f %d//%d %d//%d %d//%d\n" % (i + 1, i + 1, j + 1, j + 1, k + 1, k + 1))
+        for t, (i, j, k) in enumerate(triangles):
+            if texcoords:
+                ti, tj, tk = texcoords[1][t]
+                chunk.append("f %d/%d/%d %d/%d/%d %d/%d/%d\n" % (i + 1, ti + 1, i + 1, j + 1, tj + 1, j + 1,
+                                                               k + 1, tk + 1, k + 1))
+            else:
+                chunk.append("f %d//%d %d//%d %d//%d\n" % (i + 1, i + 1, j + 1, j + 1, k + 1, k + 1))
             if len(chunk) >= 40000:
                 out.writelines(chunk)
                 chunk = []
@@ -246,7 +301,7 @@ def write_obj(path, positions, normals, colors, triangles):
 
 def main(argv):
     a = parse_args(argv)
-    pos, nor, par, tris = SHAPES[a.shape](a.triangles)
+    pos, nor, par, tris, grid = SHAPES[a.shape](a.triangles)
 
     rx, ry = DEFAULT_TILT[a.shape]
     if a.rotate_x is not None:
@@ -304,8 +359,11 @@ def main(argv):
                       % (vec((ox + 1.8 * s, g + r2, oz + 0.2 * s)), fmt(r2)))
 
     if a.out.lower().endswith(".obj"):
+        texcoords = None
+        if a.texture:
+            texcoords = (*grid_texcoords(tris, grid), write_texture(a.out, a.texture))
         return write_obj(a.out, [place(p) for p in pos], [rot(n) for n in nor],
-                         [ramp(t) for t in par] if a.color == "ramp" else None, tris)
+                         [ramp(t) for t in par] if a.color == "ramp" else None, tris, texcoords)
 
     count = len(lights) + len(extras) + len(tris)
     out = sys.stdout if a.out == "-" else open(a.out, "w", newline="\n")

@@ -20,7 +20,8 @@ Image8 readPng(const std::filesystem::path& path);
 // Throws std::runtime_error "PATH: REASON" if it can't.
 Image8 readImage8(const std::filesystem::path& path);
 
-// Decodes a PNG, JPEG, BMP or TGA file's bytes (PATH only names it in errors) as RGBA8. The size in
+// Decodes a PNG, JPEG, BMP or TGA file's bytes (PATH only names it in errors) as RGBA8;
+// a PNM file is refused. The size in
 // its header is checked first: over maxSide pixels a side is an error before any pixel
 // memory is reserved. Throws std::runtime_error "PATH: REASON".
 Image8 decodeImage8(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes,

@@ -13,8 +13,8 @@
 
 namespace {
 
-// The child's answer: 'M' and the model's bytes, 'E' and a SceneError (line, file, message),
-// or 'X' and another exception's text.
+// The child's answer: 'M' and the bytes produced, 'E' and a SceneError (line, file,
+// message), or 'X' and another exception's text.
 void writeAll(int fd, const std::string& bytes) {
     std::size_t done = 0;
     while (done < bytes.size()) {
@@ -54,10 +54,10 @@ std::string lengthPrefixed(const std::string& bytes, std::size_t& at) {
     return text;
 }
 
-[[noreturn]] void answerAndExit(int fd, const std::function<ObjModel()>& read) {
+[[noreturn]] void answerAndExit(int fd, const std::function<std::string()>& produce) {
     std::string answer;
     try {
-        answer = "M" + modelBytes(read());
+        answer = "M" + produce();
     } catch (const SceneError& error) {
         const std::int64_t line = error.line;
         answer = "E" + std::string(reinterpret_cast<const char*>(&line), sizeof line) +
@@ -71,56 +71,63 @@ std::string lengthPrefixed(const std::string& bytes, std::size_t& at) {
 
 } // namespace
 
-ObjModel readContained(const std::string& fileName, const std::function<ObjModel()>& read) {
+std::string runContained(const std::string& fileName, const std::string& reader,
+                         const std::function<std::string()>& produce) {
     int fds[2];
     if (::pipe(fds) != 0)
-        throw SceneError(fileName, 0,
-                         std::string("cannot start the model reader: ") + std::strerror(errno));
+        throw SceneError(fileName, 0, "cannot start " + reader + ": " + std::strerror(errno));
     ::fcntl(fds[0], F_SETPIPE_SZ, 1 << 20); // fewer turns between the two for a large model
     const pid_t child = ::fork();
     if (child < 0) {
         const int error = errno;
         ::close(fds[0]);
         ::close(fds[1]);
-        throw SceneError(fileName, 0,
-                         std::string("cannot start the model reader: ") + std::strerror(error));
+        throw SceneError(fileName, 0, "cannot start " + reader + ": " + std::strerror(error));
     }
     if (child == 0) {
         ::close(fds[0]);
-        answerAndExit(fds[1], read);
+        answerAndExit(fds[1], produce);
     }
     ::close(fds[1]);
-    const std::string answer = readAll(fds[0]);
+    // The kind of answer, then its bytes: read apart, so that a large answer is not copied
+    // again to drop its first byte.
+    char kind = 0;
+    while (::read(fds[0], &kind, 1) < 0 && errno == EINTR) {
+    }
+    std::string answer = readAll(fds[0]);
     ::close(fds[0]);
     int status = 0;
     while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
     }
     if (WIFSIGNALED(status))
         throw SceneError(fileName, 0,
-                         std::string("the model reader crashed on this file (") +
-                             ::strsignal(WTERMSIG(status)) +
+                         reader + " crashed on this file (" + ::strsignal(WTERMSIG(status)) +
                              "): it is damaged, or holds what the reader cannot read");
-    if (!answer.empty() && answer[0] == 'M') {
-        try {
-            return modelFromBytes(std::string_view(answer).substr(1));
-        } catch (const std::exception& error) {
-            throw SceneError(fileName, 0,
-                             std::string("the model reader's answer is broken: ") + error.what());
-        }
-    }
-    if (!answer.empty() && answer[0] == 'E' && answer.size() >= 1 + sizeof(std::int64_t)) {
+    if (kind == 'M' && WIFEXITED(status) && WEXITSTATUS(status) == 0) return answer;
+    if (kind == 'E' && answer.size() >= sizeof(std::int64_t)) {
         std::int64_t line = 0;
-        std::memcpy(&line, answer.data() + 1, sizeof line);
-        std::size_t at = 1 + sizeof line;
+        std::memcpy(&line, answer.data(), sizeof line);
+        std::size_t at = sizeof line;
         std::string file = lengthPrefixed(answer, at);
         std::string message = lengthPrefixed(answer, at);
         throw SceneError(std::move(file), static_cast<int>(line), std::move(message));
     }
-    if (!answer.empty() && answer[0] == 'X') {
-        std::size_t at = 1;
-        throw SceneError(fileName, 0, "the model reader failed: " + lengthPrefixed(answer, at));
+    if (kind == 'X') {
+        std::size_t at = 0;
+        throw SceneError(fileName, 0, reader + " failed: " + lengthPrefixed(answer, at));
     }
     throw SceneError(fileName, 0,
-                     "the model reader ended without an answer (exit status " +
+                     reader + " ended without an answer (exit status " +
                          std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")");
+}
+
+ObjModel readContained(const std::string& fileName, const std::function<ObjModel()>& read) {
+    const std::string answer =
+        runContained(fileName, "the model reader", [&] { return modelBytes(read()); });
+    try {
+        return modelFromBytes(answer);
+    } catch (const std::exception& error) {
+        throw SceneError(fileName, 0,
+                         std::string("the model reader's answer is broken: ") + error.what());
+    }
 }

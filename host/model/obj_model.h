@@ -66,7 +66,9 @@ inline std::span<const std::uint32_t> facePositions(const ObjModel& model, std::
 // The material of faces that name none, or one that no material library defines, and what
 // an MTL material starts from: light grey, a faint highlight and no mirror (illum 2).
 inline MeshMaterial defaultObjMaterial() {
-    return MeshMaterial{Material{glm::dvec3(0.75), glm::dvec3(0.1), 30.0, 0.0}, {}};
+    MeshMaterial material;
+    material.phong = Material{glm::dvec3(0.75), glm::dvec3(0.1), 30.0, 0.0};
+    return material;
 }
 
 // The largest material library read: far beyond any real one (a few kilobytes a material).

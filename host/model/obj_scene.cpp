@@ -259,7 +259,8 @@ Mesh groundMesh(const Placement& placement) {
     ground.triangles = {{0, 3, 2}, {0, 2, 1}};
     ground.triangleMaterials = {0, 0};
     ground.triangleLines = {0, 0};
-    ground.materials = {MeshMaterial{Material{glm::dvec3(0.7), glm::dvec3(0.0), 1.0}, {}}};
+    ground.materials = {MeshMaterial{}};
+    ground.materials[0].phong = Material{glm::dvec3(0.7), glm::dvec3(0.0), 1.0};
     return ground;
 }
 
@@ -326,6 +327,11 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
                 farFaces[f] = farFaces[f] || far[p];
     }
     const std::vector<glm::dvec3>& kept = anyFar ? near : positions;
+    if (kept.empty()) { // every position far from the others (a damaged file): nothing to fit
+        const FarPositions said = describeFar(model, far, model.triangles.size());
+        throw SceneError(fileName, static_cast<int>(said.line),
+                         said.message + ": nothing is left to render");
+    }
     // A room (it encloses its centre) is seen from inside unless a view was asked for.
     bool inside = false;
     if (setup.fit && setup.insideWhenEnclosed) {

@@ -1,6 +1,7 @@
 #include "model/texture_files.h"
 
 #include "model/model_paths.h"
+#include "model/texture_decoder.h"
 #include "scene/mapped_file.h"
 #include "scene/scene_error.h"
 
@@ -10,26 +11,14 @@
 
 namespace {
 
-// The decoded texture, or throws std::runtime_error with the reason.
-Image8 readTexture(const std::string& file) {
-    std::vector<std::uint8_t> bytes;
+// The bytes of a texture file, or throws std::runtime_error "FILE: REASON".
+std::vector<std::uint8_t> textureFileBytes(const std::string& file) {
     try {
         const MappedFile mapped(file); // refuses devices, which would never end
-        bytes.assign(mapped.text().begin(), mapped.text().end());
+        return std::vector<std::uint8_t>(mapped.text().begin(), mapped.text().end());
     } catch (const SceneError& error) {
         throw std::runtime_error(file + ": " + error.message);
     }
-    return decodeImage8(file, bytes, kMaxTextureSide);
-}
-
-// The image the model file holds under name, decoded.
-Image8 decodeEmbedded(const std::string& file, const std::map<std::string, std::string>& embedded,
-                      const std::string& name) {
-    const auto found = embedded.find(name);
-    if (found == embedded.end())
-        throw std::runtime_error(file + ": the model holds no such image as a PNG or JPEG file");
-    return decodeImage8(file, std::vector<std::uint8_t>(found->second.begin(), found->second.end()),
-                        kMaxTextureSide);
 }
 
 std::string materialsKeep(std::size_t count) {
@@ -57,20 +46,41 @@ void loadTextures(Scene& scene, const std::string& modelFile,
                                      materialsKeep(textured));
             continue;
         }
+        // The files not read yet: their bytes here, then all decoded in one child.
+        std::vector<TextureBytes> files;
+        std::vector<std::string> names;
+        auto unread = [&](const std::string& name, const std::string& problem) {
+            read[name] = std::nullopt;
+            scene.warnings.push_back(sceneLocation(modelFile, 0) + "warning: texture not read: " +
+                                     problem + "; " + materialsKeep(users[name]));
+        };
         for (const auto& [name, count] : users) {
             if (read.contains(name)) continue;
+            const bool own = name.starts_with('*'); // the model file's own image
+            const std::string file = own ? modelFile + " image " + name : foundFile(name);
             try {
-                const bool own = name.starts_with('*'); // the model file's own image
-                const std::string file = own ? modelFile + " image " + name : foundFile(name);
-                Image8 image = own ? decodeEmbedded(file, embedded, name) : readTexture(file);
-                read[name] = static_cast<std::uint32_t>(scene.textures.size());
-                scene.textures.push_back(Texture{file, std::move(image)});
+                if (own) {
+                    const auto found = embedded.find(name);
+                    if (found == embedded.end())
+                        throw std::runtime_error(file +
+                                                 ": the model holds no such image as a file");
+                    files.push_back({file, {found->second.begin(), found->second.end()}});
+                } else {
+                    files.push_back({file, textureFileBytes(file)});
+                }
+                names.push_back(name);
             } catch (const std::runtime_error& error) {
-                read[name] = std::nullopt;
-                scene.warnings.push_back(sceneLocation(modelFile, 0) +
-                                         "warning: texture not read: " + error.what() + "; " +
-                                         materialsKeep(count));
+                unread(name, error.what());
             }
+        }
+        std::vector<DecodedTexture> decoded = decodeTextures(files, kMaxTextureSide);
+        for (std::size_t i = 0; i < decoded.size(); ++i) {
+            if (!decoded[i].image) {
+                unread(names[i], decoded[i].problem);
+                continue;
+            }
+            read[names[i]] = static_cast<std::uint32_t>(scene.textures.size());
+            scene.textures.push_back(Texture{files[i].file, std::move(*decoded[i].image)});
         }
         for (MeshMaterial& material : mesh.materials)
             if (!material.diffuseTexture.empty()) material.texture = read[material.diffuseTexture];

@@ -11,7 +11,8 @@
 inline constexpr int kMaxTextureSide = 16384;
 
 // Reads each distinct file that the meshes' materials name (MeshMaterial::diffuseTexture:
-// PNG, JPEG, BMP, TGA, through stb) and points those materials at it (MeshMaterial::texture).
+// PNG, JPEG, BMP, TGA, through stb in a child process, texture_decoder.h) and points those
+// materials at it (MeshMaterial::texture).
 // A texture that cannot be read (missing, a device, cut short, over kMaxTextureSide) is
 // one warning naming it, the reason and how many materials keep their colour; so is a mesh
 // with textured materials and no texture coordinates, whose textures are not read.

@@ -19,6 +19,10 @@
 //                                                           root at t = 0 is removed analytically
 //   reflection           iterative loop                     the model's recursion, folded from the
 //                                                           innermost bounce outwards
+//   texture              its own bilinear filter over       the same rule (docs/models.md) in
+//                        RGBA8 texels (no Vulkan sampler),  double from the decoded image:
+//                        texture coordinates in float       texture coordinates interpolated
+//                                                           from the model's doubles
 //
 // Accuracy. Spheres: the geometric method's d^2 = |L|^2 - tca^2 cancels when the
 // eye is far from a small sphere; in double it keeps about 53 - 2*log2(|L|/r)

@@ -59,6 +59,13 @@ std::string sceneSummary(const Scene& scene) {
                           : std::string(m->inside ? "none (a room has its own)"
                                                   : "none (--no-ground)")) +
                 "\n";
+        if (!scene.textures.empty()) {
+            std::size_t bytes = 0;
+            for (const Texture& texture : scene.textures)
+                bytes += texture.image.rgba.size();
+            model += "textures: " + std::to_string(scene.textures.size()) + " (" +
+                     std::to_string(bytes) + " bytes of texels)\n";
+        }
         const std::string unrendered = notRenderedText(scene);
         model +=
             "not rendered: " + (unrendered.empty() ? std::string("nothing") : unrendered) + "\n";

@@ -136,6 +136,8 @@ class TexturesRenderAsTheReferenceSamplesThem(unittest.TestCase):
     def test_checkerboard_and_sphere_match_the_reference(self):
         self.write("checker.png", png_bytes(64, 64, checkerboard(64, 8)))
         self.assert_matches_reference(self.model("checker", "checker.png"))
+        check = run(RAYTRACER, os.path.join(OUTPUT, "checker.obj"), "--check")
+        self.assertIn(b"\ntextures: 1 (16384 bytes of texels)\n", check.stdout)
         self.write("globe.png", png_bytes(32, 16, checkerboard(32, 4)[:16]))
         self.assert_matches_reference(self.model("globe", "globe.png", uv_sphere(12, 24)))
 

@@ -1,7 +1,8 @@
 // libFuzzer target for the model readers other than OBJ: the PLY and STL readers
 // (host/model/ply_reader.h, stl_reader.h) and assimp's (assimp_model.h, in a child process) with
 // the GLB framing check before it (model_file_checks.h). Any input told to be PLY, STL or GLB by
-// its first bytes must either become a scene or be rejected with a SceneError. Anything
+// its first bytes must either become a scene (with the images a GLB holds decoded as its
+// textures) or be rejected with a SceneError. Anything
 // else (another exception, a crash, a sanitizer report, a leak, a hang, unbounded memory)
 // is a bug. A glTF's JSON is left out: it names files beside it.
 // Also compiled into model_fuzz_replay (tests/fuzz/fuzz_replay.cpp).
@@ -10,6 +11,7 @@
 #include "model/obj_scene.h"
 #include "model/ply_reader.h"
 #include "model/stl_reader.h"
+#include "model/texture_files.h"
 #include "scene/file_format.h"
 #include "scene/scene_error.h"
 
@@ -27,7 +29,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                : *format == OtherFormat::Stl
                                    ? readStl(bytes, "fuzz.model")
                                    : readAssimpModel(bytes, "fuzz.model", format);
-        (void)sceneFromObj(model, ObjSceneSetup{}, "fuzz.model");
+        Scene scene = sceneFromObj(model, ObjSceneSetup{}, "fuzz.model");
+        // The model's own images (a GLB's) decoded as textures; a file it names is not opened.
+        for (Mesh& mesh : scene.meshes)
+            for (MeshMaterial& material : mesh.materials)
+                if (!material.diffuseTexture.starts_with('*')) material.diffuseTexture.clear();
+        loadTextures(scene, "fuzz.model", model.embeddedTextures);
     } catch (const SceneError&) {
         // the expected way to reject a model; other exceptions escape and abort
     }

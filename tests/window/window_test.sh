@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The interactive window under Xvfb: it must show exactly the pixels of the headless
-# PNG (tolerance 0), re-render at the new size after a resize, quit on Escape or Q
+# PNG (tolerance 0), for two scenes and a textured model, re-render at the new size after a resize, quit on Escape or Q
 # with status 0, close cleanly on a window manager's close request while refining, and
 # keep the validation layer silent throughout.
 #
@@ -130,6 +130,24 @@ test_scene() { # SCENE KEY RESIZE(yes|no)
     check_quits "$pid" "$key" "$stem-window.log" "$stem-window"
 }
 
+# A textured model (a quad with a checkerboard map_Kd, written here): the window samples
+# its texture as the headless render does.
+write_textured_model() { # OUT.obj
+    PYTHONPATH="$(dirname "$(absolute "$0")")/../../tools/lib" python3 - "$1" <<'PYTHON'
+import os, sys
+from png_write import write_png
+obj = sys.argv[1]
+base = os.path.splitext(obj)[0]
+rows = [[(220, 60, 40) if (x // 4 + y // 4) % 2 else (40, 90, 200) for x in range(32)] for y in range(32)]
+write_png(base + ".png", 32, 32, rows)
+with open(base + ".mtl", "w") as out:
+    out.write("newmtl board\nKd 0.5 0.5 0.5\nmap_Kd %s.png\n" % os.path.basename(base))
+with open(obj, "w") as out:
+    out.write("mtllib %s.mtl\nusemtl board\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+              "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n" % os.path.basename(base))
+PYTHON
+}
+
 # Inside Xvfb: everything runs in OUTPUT_DIR, which keeps the images and logs.
 run_inside_xvfb() {
     cd "$output_dir"
@@ -144,6 +162,8 @@ run_inside_xvfb() {
     fi
     test_scene "${scenes[0]}" Escape yes
     [[ ${#scenes[@]} -gt 1 ]] && test_scene "${scenes[1]}" q no
+    write_textured_model "$output_dir/textured.obj"
+    test_scene "$output_dir/textured.obj" q no
     check_close_mid_frame "${scenes[0]}"
     echo "window test: $passed passed, $failed failed (images and logs in $output_dir)"
     ((failed == 0))
