@@ -79,8 +79,8 @@ UpAxis parseUpAxis(const std::string& flag, const std::string& text) {
                      text + "'");
 }
 
-ObjSceneSetup objSceneSetup(const Options& options) {
-    ObjSceneSetup setup;
+ModelSceneSetup objSceneSetup(const Options& options) {
+    ModelSceneSetup setup;
     setup.up = options.modelUp;
     setup.upGiven = options.upGiven;
     setup.creaseDegrees = options.creaseDegrees;

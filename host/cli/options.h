@@ -4,7 +4,7 @@
 
 #include "base/output_format.h"
 #include "cli/usage_error.h"
-#include "model/obj_scene.h"
+#include "model/model_scene.h"
 #include "packing/bvh.h"
 #include "packing/kernel_choices.h"
 #include "scene/camera.h"
@@ -111,7 +111,7 @@ UpAxis parseUpAxis(const std::string& flag, const std::string& text);
 
 // How loadScene makes an OBJ model a scene for these options: theirs, and the view's field
 // of view and aspect ratio for the framing.
-ObjSceneSetup objSceneSetup(const Options& options);
+ModelSceneSetup objSceneSetup(const Options& options);
 
 Options parseOptions(int argc, const char* const* argv);
 

@@ -4,6 +4,7 @@
 #include "model/model_file_checks.h"
 #include "model/model_paths.h"
 #include "model/polygon_triangulation.h"
+#include "model/shared_positions.h"
 #include "scene/scene_error.h"
 
 #include <assimp/DefaultIOSystem.h>
@@ -13,13 +14,10 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
-#include <array>
-#include <bit>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <map>
-#include <unordered_map>
 
 namespace {
 
@@ -29,7 +27,7 @@ namespace {
 // specular colour and exponent as given; exponents clamped as MTL's Ns; no mirror.
 MeshMaterial materialFrom(const aiMaterial& source, const std::string& modelFile,
                           std::map<std::string, std::size_t>& counted) {
-    MeshMaterial material = defaultObjMaterial();
+    MeshMaterial material = defaultModelMaterial();
     aiColor4D colour;
     const bool baseColour = source.Get(AI_MATKEY_BASE_COLOR, colour) == AI_SUCCESS;
     if (baseColour || source.Get(AI_MATKEY_COLOR_DIFFUSE, colour) == AI_SUCCESS)
@@ -51,7 +49,7 @@ MeshMaterial materialFrom(const aiMaterial& source, const std::string& modelFile
             material.phong.shininess = shininess;
     }
     material.phong.shininess =
-        std::clamp(material.phong.shininess, kMinObjShininess, kMaxObjShininess);
+        std::clamp(material.phong.shininess, kMinModelShininess, kMaxModelShininess);
     material.phong.mirror = 0.0;
     aiColor3D emissive;
     if (source.Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == AI_SUCCESS)
@@ -67,7 +65,7 @@ MeshMaterial materialFrom(const aiMaterial& source, const std::string& modelFile
         if (baseColour) material.textureFactor = material.phong.diffuse;
     }
     // A value that is not finite (a damaged file) falls back to the default material's.
-    const MeshMaterial fallback = defaultObjMaterial();
+    const MeshMaterial fallback = defaultModelMaterial();
     auto finite = [](glm::dvec3 v) {
         return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
     };
@@ -102,26 +100,12 @@ class RegularFilesOnly : public Assimp::DefaultIOSystem {
     }
 };
 
-// A corner's identity for sharing a position: its coordinates' and colour's bits.
-struct PositionKey {
-    std::array<std::uint32_t, 7> bits{};
-    bool operator==(const PositionKey&) const = default;
-};
-struct PositionKeyHash {
-    std::size_t operator()(const PositionKey& key) const {
-        std::uint64_t hash = 1469598103934665603ull;
-        for (const std::uint32_t b : key.bits)
-            hash = (hash ^ b) * 1099511628211ull;
-        return static_cast<std::size_t>(hash);
-    }
-};
-
 } // namespace
 
 namespace {
 
-ObjModel readInThisProcess(std::string_view bytes, const std::filesystem::path& path,
-                           std::optional<OtherFormat> format) {
+SourceModel readInThisProcess(std::string_view bytes, const std::filesystem::path& path,
+                              std::optional<OtherFormat> format) {
     const std::string name = path.string();
     Assimp::Importer importer;
     importer.SetIOHandler(new RegularFilesOnly); // the importer owns it
@@ -144,9 +128,9 @@ ObjModel readInThisProcess(std::string_view bytes, const std::filesystem::path& 
         throw SceneError(name, 0, "cannot read the model: " + reason);
     }
 
-    ObjModel model;
+    SourceModel model;
     // Material i of the file is model material i + 1 (0 is the default one).
-    model.materials.push_back(defaultObjMaterial());
+    model.materials.push_back(defaultModelMaterial());
     for (unsigned i = 0; i < scene->mNumMaterials; ++i)
         model.materials.push_back(materialFrom(*scene->mMaterials[i], name, model.notRendered));
     // The file's own images, as the bytes of their files (PNG, JPEG); an image stored as raw
@@ -157,7 +141,7 @@ ObjModel readInThisProcess(std::string_view bytes, const std::filesystem::path& 
             model.embeddedTextures["*" + std::to_string(i)] =
                 std::string(reinterpret_cast<const char*>(texture.pcData), texture.mWidth);
     }
-    std::unordered_map<PositionKey, std::uint32_t, PositionKeyHash> positionOf;
+    SharedPositions shared(model, 1024);
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
         const aiMesh& mesh = *scene->mMeshes[m];
         std::vector<std::uint32_t> position(mesh.mNumVertices);
@@ -168,31 +152,12 @@ ObjModel readInThisProcess(std::string_view bytes, const std::filesystem::path& 
                 throw SceneError(name, 0,
                                  "vertex " + std::to_string(v + 1) + " of mesh " +
                                      std::to_string(m + 1) + " is not a finite position");
-            PositionKey key;
-            key.bits = {std::bit_cast<std::uint32_t>(p.x),
-                        std::bit_cast<std::uint32_t>(p.y),
-                        std::bit_cast<std::uint32_t>(p.z),
-                        0,
-                        0,
-                        0,
-                        colours ? 1u : 0u};
-            std::optional<glm::dvec3> colour;
+            std::optional<glm::vec3> colour;
             if (colours) {
                 const aiColor4D& c = mesh.mColors[0][v];
-                if (std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b))
-                    colour = glm::clamp(glm::dvec3(c.r, c.g, c.b), 0.0, 1.0);
-                key.bits[3] = std::bit_cast<std::uint32_t>(c.r);
-                key.bits[4] = std::bit_cast<std::uint32_t>(c.g);
-                key.bits[5] = std::bit_cast<std::uint32_t>(c.b);
+                colour = glm::vec3(c.r, c.g, c.b);
             }
-            const auto [found, added] =
-                positionOf.try_emplace(key, static_cast<std::uint32_t>(model.positions.size()));
-            if (added) {
-                model.positions.emplace_back(p.x, p.y, p.z);
-                model.positionLines.push_back(0);
-                model.colors.push_back(colour);
-            }
-            position[v] = found->second;
+            position[v] = shared.add(glm::vec3(p.x, p.y, p.z), colour, 0);
         }
         const std::uint32_t normalBase = static_cast<std::uint32_t>(model.normals.size());
         // Normals as given, unless one is not finite: then the crease rule's for the mesh.
@@ -219,11 +184,11 @@ ObjModel readInThisProcess(std::string_view bytes, const std::filesystem::path& 
         for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
             const aiFace& face = mesh.mFaces[f];
             if (face.mNumIndices < 3) continue;
-            std::vector<ObjCorner> corners;
+            std::vector<SourceCorner> corners;
             std::vector<glm::dvec3> points;
             for (unsigned k = 0; k < face.mNumIndices; ++k) {
                 const unsigned v = face.mIndices[k];
-                ObjCorner corner;
+                SourceCorner corner;
                 corner.position = position[v];
                 if (normals) corner.normal = normalBase + v;
                 if (texcoords) corner.texcoord = texcoordBase + v;
@@ -251,8 +216,8 @@ ObjModel readInThisProcess(std::string_view bytes, const std::filesystem::path& 
 
 } // namespace
 
-ObjModel readAssimpModel(std::string_view bytes, const std::filesystem::path& path,
-                         std::optional<OtherFormat> format) {
+SourceModel readAssimpModel(std::string_view bytes, const std::filesystem::path& path,
+                            std::optional<OtherFormat> format) {
     const std::string name = path.string();
     if (format == OtherFormat::BinaryGltf)
         if (const auto problem = glbFramingProblem(bytes)) throw SceneError(name, 0, *problem);

@@ -1,11 +1,11 @@
 // Models in the formats other than OBJ, PLY and STL (glTF 2.0 and GLB, and what else the
 // Open Asset Import Library reads: FBX, COLLADA, 3DS, OFF) read through assimp into the
-// same ObjModel an OBJ file becomes, so that every rule of obj_scene.h (up axis, fit,
+// same SourceModel an OBJ file becomes, so that every rule of model_scene.h (up axis, fit,
 // floor, rig, crease normals, far vertices) applies to them unchanged. docs/models.md
 // states how each format's contents map onto it.
 #pragma once
 
-#include "model/obj_model.h"
+#include "model/source_model.h"
 #include "scene/file_format.h"
 
 #include <filesystem>
@@ -21,5 +21,5 @@
 // or one with no triangles; a GLB file whose framing is wrong (model_file_checks.h) is refused
 // before assimp sees it. assimp runs in a child process (contained_reader.h): a crash there is an
 // error naming the file.
-ObjModel readAssimpModel(std::string_view bytes, const std::filesystem::path& path,
-                         std::optional<OtherFormat> format);
+SourceModel readAssimpModel(std::string_view bytes, const std::filesystem::path& path,
+                            std::optional<OtherFormat> format);

@@ -121,7 +121,7 @@ std::string runContained(const std::string& fileName, const std::string& reader,
                          std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")");
 }
 
-ObjModel readContained(const std::string& fileName, const std::function<ObjModel()>& read) {
+SourceModel readContained(const std::string& fileName, const std::function<SourceModel()>& read) {
     const std::string answer =
         runContained(fileName, "the model reader", [&] { return modelBytes(read()); });
     try {

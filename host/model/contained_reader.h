@@ -4,7 +4,7 @@
 // model; texture_decoder.cpp for images).
 #pragma once
 
-#include "model/obj_model.h"
+#include "model/source_model.h"
 
 #include <functional>
 #include <string>
@@ -17,4 +17,4 @@ std::string runContained(const std::string& fileName, const std::string& reader,
                          const std::function<std::string()>& produce);
 
 // read() run in a forked child, by runContained, as "the model reader".
-ObjModel readContained(const std::string& fileName, const std::function<ObjModel()>& read);
+SourceModel readContained(const std::string& fileName, const std::function<SourceModel()>& read);

@@ -41,7 +41,7 @@ std::vector<bool> farPositions(const std::vector<glm::dvec3>& positions) {
     return far;
 }
 
-FarPositions describeFar(const ObjModel& model, const std::vector<bool>& far,
+FarPositions describeFar(const SourceModel& model, const std::vector<bool>& far,
                          std::size_t trianglesLeftOut) {
     std::size_t count = 0, first = 0;
     glm::dvec3 low(0.0), high(0.0);

@@ -2,7 +2,7 @@
 // rule a stray vertex or two cannot move, and what is said of them (docs/models.md).
 #pragma once
 
-#include "model/obj_model.h"
+#include "model/source_model.h"
 
 #include <cstdint>
 #include <string>
@@ -23,5 +23,5 @@ struct FarPositions {
     std::int64_t line = 0;
     std::string message;
 };
-FarPositions describeFar(const ObjModel& model, const std::vector<bool>& far,
+FarPositions describeFar(const SourceModel& model, const std::vector<bool>& far,
                          std::size_t trianglesLeftOut);

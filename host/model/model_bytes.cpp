@@ -73,7 +73,7 @@ void check(bool holds) {
 
 } // namespace
 
-std::string modelBytes(const ObjModel& model) {
+std::string modelBytes(const SourceModel& model) {
     Writer out;
     out.array(model.positions);
     out.array(model.positionLines);
@@ -106,9 +106,9 @@ std::string modelBytes(const ObjModel& model) {
     return out.take();
 }
 
-ObjModel modelFromBytes(std::string_view bytes) {
+SourceModel modelFromBytes(std::string_view bytes) {
     Reader in(bytes);
-    ObjModel model;
+    SourceModel model;
     model.positions = in.array<glm::dvec3>();
     model.positionLines = in.array<std::int64_t>();
     model.colors = in.array<std::optional<glm::dvec3>>();
@@ -116,7 +116,7 @@ ObjModel modelFromBytes(std::string_view bytes) {
     model.texcoords = in.array<glm::dvec2>();
     model.facePositions = in.array<std::uint32_t>();
     model.faceStarts = in.array<std::size_t>();
-    model.triangles = in.array<ObjTriangle>();
+    model.triangles = in.array<SourceTriangle>();
     model.materials.resize(in.count(sizeof(Material) + 8 + 2 * sizeof(glm::dvec3)));
     for (MeshMaterial& material : model.materials) {
         material.phong = in.value<Material>();
@@ -147,8 +147,8 @@ ObjModel modelFromBytes(std::string_view bytes) {
         check(model.faceStarts[i - 1] <= model.faceStarts[i]);
     for (const std::uint32_t p : model.facePositions)
         check(p < model.positions.size());
-    for (const ObjTriangle& t : model.triangles) {
-        for (const ObjCorner& corner : t.corners)
+    for (const SourceTriangle& t : model.triangles) {
+        for (const SourceCorner& corner : t.corners)
             check(corner.position < model.positions.size() &&
                   (!corner.normal || *corner.normal < model.normals.size()) &&
                   (corner.texcoord == kNoTexcoord || corner.texcoord < model.texcoords.size()));

@@ -1,5 +1,5 @@
 // How far from the eye a model goes so that its silhouette fills the frame: the fit of a
-// model placed for the default camera (model/obj_scene.h), and the same fit again for each
+// model placed for the default camera (model/model_scene.h), and the same fit again for each
 // frame of a turntable, whose camera sees the model from another side.
 #pragma once
 

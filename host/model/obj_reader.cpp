@@ -153,7 +153,7 @@ void applyIllum(Material& material, int illum) {
 // is a warning, not an error: the material it belongs to falls back to the default one
 // (its other lines are not read), a line before any material is left out, and the model
 // renders on.
-void readMtl(const MtlFile& file, ObjModel& model, std::map<std::string, std::uint32_t>& names) {
+void readMtl(const MtlFile& file, SourceModel& model, std::map<std::string, std::uint32_t>& names) {
     std::optional<std::uint32_t> current;
     std::string currentName;
     bool skipping = false; // the current material's lines are not read (one was wrong)
@@ -193,7 +193,7 @@ void readMtl(const MtlFile& file, ObjModel& model, std::map<std::string, std::ui
                 }
                 current = static_cast<std::uint32_t>(model.materials.size());
                 currentName = joinWords(statement.words, 1);
-                model.materials.push_back(defaultObjMaterial());
+                model.materials.push_back(defaultModelMaterial());
                 names[currentName] = *current;
                 any = true;
             } else if (keyword == "Ke") {
@@ -218,7 +218,7 @@ void readMtl(const MtlFile& file, ObjModel& model, std::map<std::string, std::ui
             } else if (keyword == "Ns") {
                 if (!current) place.fail("Ns before any newmtl");
                 model.materials[*current].phong.shininess = std::clamp(
-                    numbers(place, statement, 1, "Ns")[0], kMinObjShininess, kMaxObjShininess);
+                    numbers(place, statement, 1, "Ns")[0], kMinModelShininess, kMaxModelShininess);
             } else if (keyword == "illum") {
                 if (!current) place.fail("illum before any newmtl");
                 const double illum = numbers(place, statement, 1, "illum")[0];
@@ -237,7 +237,7 @@ void readMtl(const MtlFile& file, ObjModel& model, std::map<std::string, std::ui
             std::string consequence = "; the line is left out";
             if (current) {
                 illumOf.erase(*current);
-                model.materials[*current] = defaultObjMaterial();
+                model.materials[*current] = defaultModelMaterial();
                 skipping = true;
                 consequence = "; material '" + currentName + "' is the default one";
             } else if (skipping) {
@@ -281,7 +281,7 @@ std::uint32_t resolveIndex(const Place& place, std::string_view word, std::size_
     return static_cast<std::uint32_t>(resolved);
 }
 
-ObjCorner parseCorner(const Place& place, std::string_view word, const ObjModel& model) {
+SourceCorner parseCorner(const Place& place, std::string_view word, const SourceModel& model) {
     std::vector<std::string_view> parts;
     for (std::size_t from = 0;;) {
         const std::size_t slash = word.find('/', from);
@@ -291,7 +291,7 @@ ObjCorner parseCorner(const Place& place, std::string_view word, const ObjModel&
     }
     if (parts.size() > 3 || parts[0].empty())
         place.fail("face corner '" + std::string(word) + "' is not v, v/vt, v/vt/vn or v//vn");
-    ObjCorner corner;
+    SourceCorner corner;
     corner.position = resolveIndex(place, parts[0], model.positions.size(), "vertex");
     if (parts.size() >= 2 && !parts[1].empty())
         corner.texcoord =
@@ -303,15 +303,16 @@ ObjCorner parseCorner(const Place& place, std::string_view word, const ObjModel&
 
 } // namespace
 
-ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlLookup& lookUpMtl) {
+SourceModel parseObj(std::string_view text, const std::string& fileName,
+                     const MtlLookup& lookUpMtl) {
     if (const auto format = otherFileFormat(text))
         throw SceneError(fileName, 0,
-                         otherFormatMessage(*format, fileName, ExpectedFile::ObjModel));
+                         otherFormatMessage(*format, fileName, ExpectedFile::SourceModel));
     if (const auto reason = scene_lexer::binaryReason(text, scene_lexer::TextEncoding::AnyBytes))
         throw SceneError(fileName, 0, "not an OBJ file: it is binary (" + *reason + ")");
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3); // UTF-8 byte-order mark
-    ObjModel model;
-    model.materials.push_back(defaultObjMaterial());
+    SourceModel model;
+    model.materials.push_back(defaultModelMaterial());
     std::map<std::string, std::uint32_t> names;
     std::uint32_t material = 0;
     std::set<std::string, std::less<>> ignored;
@@ -346,10 +347,10 @@ ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlL
             const std::size_t count = statement.words.size() - 1;
             if (count < 3)
                 place.fail("a face needs at least 3 corners, got " + std::to_string(count));
-            std::vector<ObjCorner> corners;
+            std::vector<SourceCorner> corners;
             for (std::size_t i = 1; i <= count; ++i)
                 corners.push_back(parseCorner(place, statement.words[i], model));
-            for (const ObjCorner& corner : corners)
+            for (const SourceCorner& corner : corners)
                 model.facePositions.push_back(corner.position);
             model.faceStarts.push_back(model.facePositions.size());
             const auto face = static_cast<std::uint32_t>(faceCount(model) - 1);
@@ -360,7 +361,7 @@ ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlL
                 return;
             }
             std::vector<glm::dvec3> points;
-            for (const ObjCorner& corner : corners)
+            for (const SourceCorner& corner : corners)
                 points.push_back(model.positions[corner.position]);
             const PolygonTriangles split = triangulatePolygon(points);
             if (split.fannedConcave && fannedConcave++ == 0) firstFannedLine = statement.line;
@@ -414,7 +415,7 @@ ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlL
     return model;
 }
 
-ObjModel readObjFile(const std::filesystem::path& path, std::string_view text) {
+SourceModel readObjFile(const std::filesystem::path& path, std::string_view text) {
     const std::string name = path.string();
     std::error_code error;
     const std::string folder = directoryOf(name);

@@ -1,4 +1,4 @@
-// Wavefront OBJ text (and the MTL files it names) to an ObjModel. The rules, which
+// Wavefront OBJ text (and the MTL files it names) to a SourceModel. The rules, which
 // tools/obj_to_scene.py follows too, are in docs/models.md: faces of 3 or more corners
 // (v, v/vt, v/vt/vn, v//vn; 1-based or negative indices), split into triangles
 // (polygon_triangulation.h: a fan when convex, ear clipping when concave); vn as given; `v x y z r
@@ -7,7 +7,7 @@
 // not an OBJ file.
 #pragma once
 
-#include "model/obj_model.h"
+#include "model/source_model.h"
 
 #include <filesystem>
 #include <functional>
@@ -24,8 +24,9 @@ struct MtlFile {
 using MtlLookup = std::function<MtlFile(const std::string& name)>;
 
 // fileName is used in messages; lookUpMtl finds the libraries that mtllib names.
-ObjModel parseObj(std::string_view text, const std::string& fileName, const MtlLookup& lookUpMtl);
+SourceModel parseObj(std::string_view text, const std::string& fileName,
+                     const MtlLookup& lookUpMtl);
 
 // The model in text, the file at path (whose name is used in messages), with the
 // libraries beside it that it names.
-ObjModel readObjFile(const std::filesystem::path& path, std::string_view text);
+SourceModel readObjFile(const std::filesystem::path& path, std::string_view text);

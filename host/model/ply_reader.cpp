@@ -357,7 +357,7 @@ std::uint64_t smallestInstance(const Element& element, bool ascii) {
 }
 
 struct PlyReading {
-    ObjModel model;
+    SourceModel model;
     std::vector<std::uint32_t> polygon; // the face being read
     std::size_t shortFaces = 0;         // faces of fewer than 3 corners, left out
     std::size_t fannedConcave = 0;
@@ -365,13 +365,13 @@ struct PlyReading {
 };
 
 void addFace(PlyReading& reading, std::span<const std::uint32_t> corners) {
-    ObjModel& model = reading.model;
+    SourceModel& model = reading.model;
     for (const std::uint32_t p : corners)
         model.facePositions.push_back(p);
     model.faceStarts.push_back(model.facePositions.size());
     const auto face = static_cast<std::uint32_t>(faceCount(model) - 1);
     auto corner = [&](std::uint32_t p) {
-        ObjCorner c;
+        SourceCorner c;
         c.position = p;
         if (reading.normals) c.normal = p;
         return c;
@@ -440,12 +440,12 @@ void readIndices(PlyReading& reading, Values& values, const Element& element,
 
 } // namespace
 
-ObjModel readPly(std::string_view bytes, const std::string& fileName) {
+SourceModel readPly(std::string_view bytes, const std::string& fileName) {
     const Header header = readHeader(bytes, fileName);
     Values values(bytes, header, fileName);
     PlyReading reading;
-    ObjModel& model = reading.model;
-    model.materials.push_back(defaultObjMaterial());
+    SourceModel& model = reading.model;
+    model.materials.push_back(defaultModelMaterial());
     const Element* vertexElement = nullptr;
     for (const Element& element : header.elements) {
         if (element.count > (values.left() + 1) / smallestInstance(element, values.ascii()) ||

@@ -18,15 +18,16 @@
 namespace {
 
 // A model made a scene, with the textures it names.
-Scene sceneFromModel(const ObjModel& model, const ObjSceneSetup& setup, const std::string& name) {
-    Scene scene = sceneFromObj(model, setup, name);
+Scene texturedScene(const SourceModel& model, const ModelSceneSetup& setup,
+                    const std::string& name) {
+    Scene scene = sceneFromModel(model, setup, name);
     loadTextures(scene, name, model.embeddedTextures);
     return scene;
 }
 
 } // namespace
 
-Scene loadScene(const std::filesystem::path& path, const ObjSceneSetup& modelSetup) {
+Scene loadScene(const std::filesystem::path& path, const ModelSceneSetup& modelSetup) {
     const std::string name = path.string();
     std::error_code error;
     // open succeeds on a directory on Linux and only the read fails; say it plainly.
@@ -35,13 +36,13 @@ Scene loadScene(const std::filesystem::path& path, const ObjSceneSetup& modelSet
     const MappedFile file(name);
     const std::optional<OtherFormat> format = otherFileFormat(file.text());
     if (format == OtherFormat::Ply || (!format && isPlyPath(path)))
-        return sceneFromModel(readPly(file.text(), name), modelSetup, name);
+        return texturedScene(readPly(file.text(), name), modelSetup, name);
     if (format == OtherFormat::Stl || (!format && isStlPath(path)))
-        return sceneFromModel(readStl(file.text(), name), modelSetup, name);
+        return texturedScene(readStl(file.text(), name), modelSetup, name);
     if (format && *format != OtherFormat::Utf16Text)
-        return sceneFromModel(readAssimpModel(file.text(), path, format), modelSetup, name);
-    if (isObjPath(path)) return sceneFromModel(readObjFile(path, file.text()), modelSetup, name);
+        return texturedScene(readAssimpModel(file.text(), path, format), modelSetup, name);
+    if (isObjPath(path)) return texturedScene(readObjFile(path, file.text()), modelSetup, name);
     if (isAssimpPath(path) && !format)
-        return sceneFromModel(readAssimpModel(file.text(), path, std::nullopt), modelSetup, name);
+        return texturedScene(readAssimpModel(file.text(), path, std::nullopt), modelSetup, name);
     return parseScene(file.text(), name);
 }

@@ -2,13 +2,13 @@
 // format is told by the file's first bytes, whatever its name (scene/file_format.h), then
 // by its name: PLY and STL by the readers here, glTF, GLB and the other formats assimp
 // reads through assimp_model.h, OBJ by obj_reader.h, each made a scene by the rules of
-// obj_scene.h (docs/models.md); anything else is scene text (scene/scene_loader.h).
+// model_scene.h (docs/models.md); anything else is scene text (scene/scene_loader.h).
 #pragma once
 
-#include "model/obj_scene.h"
+#include "model/model_scene.h"
 #include "scene/scene.h"
 
 #include <filesystem>
 
 // A missing, unreadable, binary or malformed file, or a device, is a SceneError naming it.
-Scene loadScene(const std::filesystem::path& path, const ObjSceneSetup& modelSetup = {});
+Scene loadScene(const std::filesystem::path& path, const ModelSceneSetup& modelSetup = {});

@@ -1,53 +1,17 @@
 #include "model/stl_reader.h"
 
+#include "model/shared_positions.h"
 #include "scene/file_format.h"
 #include "scene/scene_error.h"
 
-#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <unordered_map>
 
 namespace {
 
-// Positions by their coordinates' bits, so that each is one position of the model.
-class SharedPositions {
-  public:
-    explicit SharedPositions(ObjModel& model) : model_(model) {}
-
-    std::uint32_t add(float x, float y, float z, std::int64_t line) {
-        const Key key{std::bit_cast<std::uint32_t>(x), std::bit_cast<std::uint32_t>(y),
-                      std::bit_cast<std::uint32_t>(z)};
-        const auto [found, added] =
-            index_.try_emplace(key, static_cast<std::uint32_t>(model_.positions.size()));
-        if (added) {
-            model_.positions.emplace_back(x, y, z);
-            model_.positionLines.push_back(line);
-            model_.colors.emplace_back();
-        }
-        return found->second;
-    }
-
-  private:
-    struct Key {
-        std::uint32_t x, y, z;
-        bool operator==(const Key&) const = default;
-    };
-    struct KeyHash {
-        std::size_t operator()(const Key& k) const {
-            std::uint64_t h = k.x;
-            h = h * 0x9E3779B97F4A7C15ull ^ k.y;
-            h = h * 0x9E3779B97F4A7C15ull ^ k.z;
-            return static_cast<std::size_t>(h ^ (h >> 29));
-        }
-    };
-    ObjModel& model_;
-    std::unordered_map<Key, std::uint32_t, KeyHash> index_;
-};
-
-void addTriangle(ObjModel& model, const std::uint32_t corners[3], std::int64_t line) {
+void addTriangle(SourceModel& model, const std::uint32_t corners[3], std::int64_t line) {
     for (int k = 0; k < 3; ++k)
         model.facePositions.push_back(corners[k]);
     model.faceStarts.push_back(model.facePositions.size());
@@ -60,7 +24,7 @@ bool isSpace(char c) {
     return c == ' ' || c == '\t' || c == '\r' || c == '\n';
 }
 
-void readBinary(std::string_view bytes, const std::string& fileName, ObjModel& model) {
+void readBinary(std::string_view bytes, const std::string& fileName, SourceModel& model) {
     std::uint32_t count = 0;
     std::memcpy(&count, bytes.data() + 80, 4);
     if (84 + 50 * std::uint64_t(count) != bytes.size())
@@ -69,7 +33,7 @@ void readBinary(std::string_view bytes, const std::string& fileName, ObjModel& m
                          "claims " +
                              std::to_string(count) + " triangle(s), and it has " +
                              std::to_string(bytes.size()) + " bytes");
-    SharedPositions shared(model);
+    SharedPositions shared(model, count / 2);
     model.positions.reserve(count / 2);
     model.triangles.reserve(count);
     for (std::uint32_t t = 0; t < count; ++t) {
@@ -82,14 +46,14 @@ void readBinary(std::string_view bytes, const std::string& fileName, ObjModel& m
                 throw SceneError(fileName, 0,
                                  "corner " + std::to_string(k + 1) + " of triangle " +
                                      std::to_string(t + 1) + " is not a finite position");
-            corners[k] = shared.add(xyz[0], xyz[1], xyz[2], 0);
+            corners[k] = shared.add(glm::vec3(xyz[0], xyz[1], xyz[2]), std::nullopt, 0);
         }
         addTriangle(model, corners, 0);
     }
 }
 
-void readText(std::string_view bytes, const std::string& fileName, ObjModel& model) {
-    SharedPositions shared(model);
+void readText(std::string_view bytes, const std::string& fileName, SourceModel& model) {
+    SharedPositions shared(model, 1024);
     std::size_t at = 0;
     int line = 1;
     std::uint32_t corners[3];
@@ -128,7 +92,7 @@ void readText(std::string_view bytes, const std::string& fileName, ObjModel& mod
                                          std::string(number.substr(0, 40)) + "'");
             }
             if (corner == 3) throw SceneError(fileName, line, "a facet of more than 3 vertices");
-            corners[corner++] = shared.add(xyz[0], xyz[1], xyz[2], line);
+            corners[corner++] = shared.add(glm::vec3(xyz[0], xyz[1], xyz[2]), std::nullopt, line);
         } else if (w == "endfacet" || w == "endloop") {
             if (w == "endfacet") {
                 if (corner != 3)
@@ -148,9 +112,9 @@ void readText(std::string_view bytes, const std::string& fileName, ObjModel& mod
 
 } // namespace
 
-ObjModel readStl(std::string_view bytes, const std::string& fileName) {
-    ObjModel model;
-    model.materials.push_back(defaultObjMaterial());
+SourceModel readStl(std::string_view bytes, const std::string& fileName) {
+    SourceModel model;
+    model.materials.push_back(defaultModelMaterial());
     // A binary file whose size adds up is binary even when its header starts with "solid"
     // (as some CAD exporters write it).
     const bool text = !isBinaryStl(bytes) && bytes.substr(0, 5) == "solid" &&

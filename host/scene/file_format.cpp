@@ -77,7 +77,7 @@ std::string formatName(OtherFormat format) {
 
 std::string otherFormatMessage(OtherFormat format, const std::string& fileName,
                                ExpectedFile expected) {
-    const bool obj = expected == ExpectedFile::ObjModel;
+    const bool obj = expected == ExpectedFile::SourceModel;
     const std::string readAs = obj ? "an OBJ model" : "a scene file";
     if (format == OtherFormat::Utf16Text)
         return "the file is UTF-16 text, and " + readAs +

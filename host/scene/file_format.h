@@ -21,7 +21,7 @@ std::optional<OtherFormat> otherFileFormat(std::string_view text);
 std::string formatName(OtherFormat format);
 
 // What the file was read as.
-enum class ExpectedFile { Scene, ObjModel };
+enum class ExpectedFile { Scene, SourceModel };
 
 // The error's message for a file of that format: what it is, and what to do about it.
 std::string otherFormatMessage(OtherFormat format, const std::string& fileName,

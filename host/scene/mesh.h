@@ -1,6 +1,6 @@
 // A triangle mesh indexed as model files store one (pbrt-v4's TriangleMesh, a glTF
 // primitive): vertices shared by the triangles that meet there, and a material per triangle
-// from the mesh's table. Models of any format become one of these (obj_scene.h for OBJ);
+// from the mesh's table. Models of any format become one of these (model_scene.h for OBJ);
 // the scene format, which states a material per vertex, keeps its per-vertex Triangle
 // (scene.h). Packing reads both (host/packing/scene_packing.h). No Vulkan here.
 #pragma once
@@ -41,7 +41,7 @@ struct MeshMaterial {
     std::optional<std::uint32_t> texture;
     glm::dvec3 textureFactor{1.0};
     // MTL's Ke, negative parts 0: a model's emitting surfaces become point lights
-    // (model/obj_scene.h). Zero: the material emits nothing.
+    // (model/model_scene.h). Zero: the material emits nothing.
     glm::dvec3 emission{0.0};
 };
 

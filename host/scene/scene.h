@@ -46,7 +46,7 @@ struct Light {
     std::int64_t line = 0;
 };
 
-// Where an OBJ model's light rig (model/obj_scene.h) hangs: the model's centre and radius.
+// Where an OBJ model's light rig (model/model_scene.h) hangs: the model's centre and radius.
 // The rig's lights are placed from these and a camera, so that whoever renders the scene
 // from another camera (a batch frame, the window) can place them again for it.
 struct LightRigAnchor {
@@ -57,7 +57,7 @@ struct LightRigAnchor {
     std::vector<Light> emitters;
 };
 
-// What an OBJ model became (model/obj_scene.h), for --check, the default camera and the
+// What an OBJ model became (model/model_scene.h), for --check, the default camera and the
 // turntable: its box as read, where it was placed, and its floor.
 struct ModelPlacement {
     glm::dvec3 readLow{0.0}, readHigh{0.0};     // the file's coordinates (far vertices left out)
@@ -69,7 +69,7 @@ struct ModelPlacement {
     bool floor = false;           // a floor was added, with this box:
     glm::dvec3 floorLow{0.0}, floorHigh{0.0};
     // What its materials hold that is not rendered, with how many materials hold it
-    // (ObjModel::notRendered).
+    // (SourceModel::notRendered).
     std::map<std::string, std::size_t> notRendered;
 };
 

@@ -11,7 +11,7 @@
 #include "cli/options.h"
 #include "compare/comparison.h"
 #include "gpu/context.h"
-#include "model/obj_scene.h"
+#include "model/model_scene.h"
 #include "render/renderer.h"
 #include "scene/camera.h"
 #include "scene/scene.h"

@@ -8,7 +8,7 @@
 // Also compiled into model_fuzz_replay (tests/fuzz/fuzz_replay.cpp).
 #include "model/assimp_model.h"
 #include "model/model_file_checks.h"
-#include "model/obj_scene.h"
+#include "model/model_scene.h"
 #include "model/ply_reader.h"
 #include "model/stl_reader.h"
 #include "model/texture_files.h"
@@ -25,11 +25,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto format = otherFileFormat(bytes);
     if (!format || *format == OtherFormat::Utf16Text || *format == OtherFormat::Gltf) return 0;
     try {
-        const ObjModel model = *format == OtherFormat::Ply ? readPly(bytes, "fuzz.model")
-                               : *format == OtherFormat::Stl
-                                   ? readStl(bytes, "fuzz.model")
-                                   : readAssimpModel(bytes, "fuzz.model", format);
-        Scene scene = sceneFromObj(model, ObjSceneSetup{}, "fuzz.model");
+        const SourceModel model = *format == OtherFormat::Ply ? readPly(bytes, "fuzz.model")
+                                  : *format == OtherFormat::Stl
+                                      ? readStl(bytes, "fuzz.model")
+                                      : readAssimpModel(bytes, "fuzz.model", format);
+        Scene scene = sceneFromModel(model, ModelSceneSetup{}, "fuzz.model");
         // The model's own images (a GLB's) decoded as textures; a file it names is not opened.
         for (Mesh& mesh : scene.meshes)
             for (MeshMaterial& material : mesh.materials)

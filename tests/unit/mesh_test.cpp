@@ -2,8 +2,8 @@
 // floor a mesh of its own, every triangle reads back in the scene format's per-vertex form
 // (scene_triangles.h), and the packer makes exactly the same GPU arrays from a mesh as from
 // the same triangles written per vertex, so a model renders the same bytes either way.
+#include "model/model_scene.h"
 #include "model/obj_reader.h"
-#include "model/obj_scene.h"
 #include "packing/scene_packing.h"
 #include "scene/scene_triangles.h"
 
@@ -16,12 +16,12 @@
 namespace {
 
 Scene modelScene(const std::string& obj, const std::string& mtl = "", bool ground = true) {
-    const ObjModel model = parseObj(obj, "model.obj", [&](const std::string& name) {
+    const SourceModel model = parseObj(obj, "model.obj", [&](const std::string& name) {
         return MtlFile{name, mtl};
     });
-    ObjSceneSetup setup;
+    ModelSceneSetup setup;
     setup.ground = ground;
-    return sceneFromObj(model, setup, "model.obj");
+    return sceneFromModel(model, setup, "model.obj");
 }
 
 // The same scene with every mesh triangle written out per vertex, as a scene file holds it.
@@ -127,7 +127,7 @@ TEST(Mesh, TheMaterialTableHoldsTheDiffuseTextureNamedByTheMtl) {
     EXPECT_EQ(materials[3].diffuseTexture, ""); // not an option of MTL's: no name read
     EXPECT_EQ(materials[4].diffuseTexture, ""); // options and no name
     EXPECT_EQ(scene.meshes[0].triangleMaterials[0], 2u);
-    EXPECT_EQ(materials[2].phong.diffuse, defaultObjMaterial().phong.diffuse);
+    EXPECT_EQ(materials[2].phong.diffuse, defaultModelMaterial().phong.diffuse);
 }
 
 TEST(Mesh, PackingAMeshEqualsPackingItsTrianglesPerVertex) {

@@ -101,7 +101,7 @@ TEST(ModelInput, AMissingLibraryIsOneWarningWithTheFacesThatFellBack) {
                             "f 1 2 3\n"                      // before any usemtl: not counted
                             "usemtl red\nf 1 2 3\nf 2 4 3\n" // two faces fell back
                             "usemtl blue\nf 1 2 4\n";        // and one more
-    const ObjModel model = parseObj(obj, "m.obj", [](const std::string& name) {
+    const SourceModel model = parseObj(obj, "m.obj", [](const std::string& name) {
         return MtlFile{name, std::nullopt};
     });
     ASSERT_EQ(model.warnings.size(), 1u);
@@ -109,18 +109,18 @@ TEST(ModelInput, AMissingLibraryIsOneWarningWithTheFacesThatFellBack) {
                                  "faces use the default material");
     // Two missing libraries are named in that one warning; a name unknown while every
     // library was found is still its own warning.
-    const ObjModel two = parseObj("mtllib a.mtl b.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
-                                  "m.obj", [](const std::string& name) {
-                                      return MtlFile{name, std::nullopt};
-                                  });
+    const SourceModel two = parseObj("mtllib a.mtl b.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+                                     "m.obj", [](const std::string& name) {
+                                         return MtlFile{name, std::nullopt};
+                                     });
     ASSERT_EQ(two.warnings.size(), 1u);
     EXPECT_EQ(two.warnings[0], "m.obj:1: warning: material libraries a.mtl and b.mtl not found; 0 "
                                "of 1 faces use the default material");
-    const ObjModel found = parseObj("mtllib here.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
-                                    "usemtl nosuch\nf 1 2 3\n",
-                                    "m.obj", [](const std::string& name) {
-                                        return MtlFile{name, "newmtl red\nKd 1 0 0\n"};
-                                    });
+    const SourceModel found = parseObj("mtllib here.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                       "usemtl nosuch\nf 1 2 3\n",
+                                       "m.obj", [](const std::string& name) {
+                                           return MtlFile{name, "newmtl red\nKd 1 0 0\n"};
+                                       });
     ASSERT_EQ(found.warnings.size(), 1u);
     EXPECT_EQ(found.warnings[0],
               "m.obj:5: warning: unknown material 'nosuch'; default material used");
@@ -240,7 +240,7 @@ TEST(ModelInput, AConcaveFaceOutOfItsPlaneIsOneWarning) {
     for (std::size_t i = 1; i <= bent.size(); ++i)
         face += " " + std::to_string(i);
     obj += face + "\n" + face + "\n";
-    const ObjModel model = parseObj(obj, "m.obj", [](const std::string& name) {
+    const SourceModel model = parseObj(obj, "m.obj", [](const std::string& name) {
         return MtlFile{name, std::nullopt};
     });
     ASSERT_EQ(model.warnings.size(), 1u);

@@ -223,7 +223,7 @@ int main(int argc, char** argv) {
 
     try {
         // An OBJ model is built as Raytracer builds it for the same view (docs/models.md).
-        ObjSceneSetup modelSetup;
+        ModelSceneSetup modelSetup;
         modelSetup.fovDegrees = settings.fovDegrees;
         modelSetup.aspect = double(settings.width) / double(settings.height);
         modelSetup.camera = {settings.cameraPosition, settings.cameraTarget, settings.cameraUp};

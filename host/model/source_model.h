@@ -1,5 +1,6 @@
-// A Wavefront OBJ model as its file states it (obj_reader.h reads it), before anything a
-// scene needs is added (obj_scene.h): positions, normals, faces and their materials.
+// A model as its file states it, before anything a scene needs is added (model_scene.h):
+// positions, normals, texture coordinates, faces and their materials. Every reader makes
+// one: OBJ's (obj_reader.h), PLY's, STL's and assimp's; its fields follow OBJ's statements.
 #pragma once
 
 #include "scene/scene.h"
@@ -14,22 +15,22 @@
 // A corner's texcoord when its face gives none.
 inline constexpr std::uint32_t kNoTexcoord = UINT32_MAX;
 
-// One corner of a face: indices into ObjModel's positions, normals and texcoords (0-based).
-struct ObjCorner {
+// One corner of a face: indices into SourceModel's positions, normals and texcoords (0-based).
+struct SourceCorner {
     std::uint32_t position = 0;
     std::optional<std::uint32_t> normal; // none: the corner gets a smooth normal
     std::uint32_t texcoord = kNoTexcoord;
 };
 
 // A triangle of a face's fan (a polygon is split from its first corner).
-struct ObjTriangle {
-    ObjCorner corners[3];
-    std::uint32_t material = 0; // into ObjModel::materials
+struct SourceTriangle {
+    SourceCorner corners[3];
+    std::uint32_t material = 0; // into SourceModel::materials
     std::uint32_t face = 0;     // the face (faceCount, facePositions) it was split from
     std::int64_t line = 0;      // the face's line in the OBJ file
 };
 
-struct ObjModel {
+struct SourceModel {
     std::vector<glm::dvec3> positions;
     std::vector<std::int64_t> positionLines; // each position's `v` line, for messages
     // `v x y z r g b` (a common extension): the vertex's diffuse colour, clamped to [0, 1].
@@ -41,7 +42,7 @@ struct ObjModel {
     // rather than a vector per face (which cost 56 bytes a face before its indices).
     std::vector<std::uint32_t> facePositions;
     std::vector<std::size_t> faceStarts{0};
-    std::vector<ObjTriangle> triangles;
+    std::vector<SourceTriangle> triangles;
     // materials[0] is the default one, for faces without a known material; each with the
     // diffuse texture its map_Kd names, if any (the path from the MTL file's folder).
     std::vector<MeshMaterial> materials;
@@ -55,17 +56,17 @@ struct ObjModel {
     std::map<std::string, std::size_t> notRendered;
 };
 
-inline std::size_t faceCount(const ObjModel& model) {
+inline std::size_t faceCount(const SourceModel& model) {
     return model.faceStarts.size() - 1;
 }
-inline std::span<const std::uint32_t> facePositions(const ObjModel& model, std::size_t face) {
+inline std::span<const std::uint32_t> facePositions(const SourceModel& model, std::size_t face) {
     return std::span<const std::uint32_t>(model.facePositions)
         .subspan(model.faceStarts[face], model.faceStarts[face + 1] - model.faceStarts[face]);
 }
 
 // The material of faces that name none, or one that no material library defines, and what
 // an MTL material starts from: light grey, a faint highlight and no mirror (illum 2).
-inline MeshMaterial defaultObjMaterial() {
+inline MeshMaterial defaultModelMaterial() {
     MeshMaterial material;
     material.phong = Material{glm::dvec3(0.75), glm::dvec3(0.1), 30.0, 0.0};
     return material;
@@ -75,7 +76,7 @@ inline MeshMaterial defaultObjMaterial() {
 inline constexpr std::uintmax_t kMaxMtlBytes = std::uintmax_t(64) << 20;
 
 // Ns above this is clamped: the Phong exponent of the scene format has no use for more.
-inline constexpr double kMaxObjShininess = 1000.0;
+inline constexpr double kMaxModelShininess = 1000.0;
 // Ns below this is raised to it: an exponent of 0 would give every lit point the full
 // highlight colour; 1 is the broadest highlight that still falls off.
-inline constexpr double kMinObjShininess = 1.0;
+inline constexpr double kMinModelShininess = 1.0;

@@ -1,11 +1,11 @@
-// An ObjModel made a Scene: what a model file lacks and a scene needs (an up axis, normals
+// A SourceModel made a Scene: what a model file lacks and a scene needs (an up axis, normals
 // where none are given, a place in view, a ground, lights, an ambient colour), each by a
 // rule of docs/models.md that tools/obj_to_scene.py follows too, operation for operation.
 #pragma once
 
 #include "model/model_lights.h"
 #include "model/model_view.h"
-#include "model/obj_model.h"
+#include "model/source_model.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 
@@ -15,7 +15,7 @@
 // so that this axis points along +y, the default camera's up.
 enum class UpAxis { PosX, NegX, PosY, NegY, PosZ, NegZ };
 
-struct ObjSceneSetup {
+struct ModelSceneSetup {
     UpAxis up = UpAxis::PosY;
     bool upGiven = false; // --up was given: no note that the model may lie on its back
     // A corner without a normal averages the faces around it that meet its own face at
@@ -54,4 +54,5 @@ inline constexpr double kInteriorRigShare = 0.15;
 
 // Triangles with two corners at one position, or of no area, are left out, and counted in
 // a warning; fileName names the model in it.
-Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std::string& fileName);
+Scene sceneFromModel(const SourceModel& model, const ModelSceneSetup& setup,
+                     const std::string& fileName);

@@ -1,7 +1,7 @@
-// ObjModel to Scene (obj_scene.h). The arithmetic is the same, operation for operation and
+// SourceModel to Scene (model_scene.h). The arithmetic is the same, operation for operation and
 // in the same order, as tools/obj_to_scene.py's in double precision, so that both write
 // the same scene text; docs/models.md states the rules.
-#include "model/obj_scene.h"
+#include "model/model_scene.h"
 
 #include "base/deduplicator.h"
 #include "model/exact_vectors.h"
@@ -78,7 +78,7 @@ double newellScale(const std::vector<glm::dvec3>& positions) {
 // Faces left out of the scene (leftOut[f], or none when it is empty) count for no corner.
 class SmoothNormals {
   public:
-    SmoothNormals(const ObjModel& model, const std::vector<glm::dvec3>& positions,
+    SmoothNormals(const SourceModel& model, const std::vector<glm::dvec3>& positions,
                   double creaseDegrees, const std::vector<bool>& leftOut)
         : cosine_(std::cos(creaseDegrees * (kPi / 180.0))), everywhere_(creaseDegrees >= 180.0) {
         facesAround_.resize(positions.size());
@@ -109,7 +109,7 @@ class SmoothNormals {
     std::vector<std::vector<std::uint32_t>> facesAround_;
 };
 
-bool isDegenerate(const std::vector<glm::dvec3>& positions, const ObjTriangle& triangle) {
+bool isDegenerate(const std::vector<glm::dvec3>& positions, const SourceTriangle& triangle) {
     const std::uint32_t a = triangle.corners[0].position, b = triangle.corners[1].position,
                         c = triangle.corners[2].position;
     if (a == b || b == c || a == c) return true;
@@ -191,7 +191,7 @@ Placement insidePlacement(const std::vector<glm::dvec3>& positions) {
     return placement;
 }
 
-Placement placementOf(const std::vector<glm::dvec3>& positions, const ObjSceneSetup& setup) {
+Placement placementOf(const std::vector<glm::dvec3>& positions, const ModelSceneSetup& setup) {
     glm::dvec3 low = positions[0], high = positions[0];
     for (const glm::dvec3& p : positions) {
         low = glm::min(low, p);
@@ -265,7 +265,7 @@ Mesh groundMesh(const Placement& placement) {
 }
 
 // Scene::model for a model placed as placement says, its mesh made.
-ModelPlacement placementFacts(const ObjModel& model, const std::vector<bool>& far,
+ModelPlacement placementFacts(const SourceModel& model, const std::vector<bool>& far,
                               const Placement& placement, const Mesh& mesh, bool fitted) {
     ModelPlacement facts;
     std::vector<glm::dvec3> read;
@@ -306,7 +306,8 @@ struct CornerKey {
 
 } // namespace
 
-Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std::string& fileName) {
+Scene sceneFromModel(const SourceModel& model, const ModelSceneSetup& setup,
+                     const std::string& fileName) {
     std::vector<glm::dvec3> positions, normals;
     for (const glm::dvec3& p : model.positions)
         positions.push_back(turnUp(p, setup.up));
@@ -336,7 +337,7 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
     bool inside = false;
     if (setup.fit && setup.insideWhenEnclosed) {
         std::vector<glm::uvec3> corners;
-        for (const ObjTriangle& t : model.triangles)
+        for (const SourceTriangle& t : model.triangles)
             if (!(anyFar && farFaces[t.face]) && !isDegenerate(positions, t))
                 corners.emplace_back(t.corners[0].position, t.corners[1].position,
                                      t.corners[2].position);
@@ -358,7 +359,7 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
     std::vector<CornerKey> corners; // one per mesh vertex
     Deduplicator<CornerKey> vertexOf(corners, model.positions.size());
     std::size_t degenerate = 0, farTriangles = 0;
-    for (const ObjTriangle& source : model.triangles) {
+    for (const SourceTriangle& source : model.triangles) {
         if (anyFar && farFaces[source.face]) {
             ++farTriangles;
             continue;
@@ -369,7 +370,7 @@ Scene sceneFromObj(const ObjModel& model, const ObjSceneSetup& setup, const std:
         }
         glm::uvec3 triangle;
         for (int k = 0; k < 3; ++k) {
-            const ObjCorner& corner = source.corners[k];
+            const SourceCorner& corner = source.corners[k];
             CornerKey key;
             key.position = corner.position;
             key.texcoord = corner.texcoord;
