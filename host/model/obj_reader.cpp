@@ -11,6 +11,7 @@
 #include "scene/scene_lexer.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -32,6 +33,7 @@ template <typename OnStatement>
 void forEachStatement(std::string_view text, OnStatement onStatement) {
     std::string joined; // a continued line, put together
     int line = 0, start = 0;
+    Statement statement; // one for every line: its words' storage is reused
     std::size_t pos = 0;
     while (pos < text.size()) {
         std::size_t end = text.find_first_of("\r\n", pos);
@@ -52,7 +54,8 @@ void forEachStatement(std::string_view text, OnStatement onStatement) {
         }
         std::string_view logical = joined.empty() ? physical : std::string_view(joined);
         logical = logical.substr(0, logical.find('#'));
-        Statement statement{start, {}};
+        statement.line = start;
+        statement.words.clear();
         scene_lexer::Tokenizer words{logical};
         for (auto word = words.next(); !word.text.empty(); word = words.next())
             statement.words.push_back(word.text);
@@ -79,31 +82,41 @@ struct Place {
     }
 };
 
+// The numbers of a statement, at most 7 (`v x y z r g b`, or x y z w), held without a heap
+// allocation: a model has millions of such lines.
+struct Numbers {
+    std::array<double, 7> values{};
+    std::size_t count = 0;
+    std::size_t size() const { return count; }
+    double operator[](std::size_t i) const { return values[i]; }
+};
+
 // The words after the keyword as `count` to `count + optional` finite numbers.
-std::vector<double> numbers(const Place& place, const Statement& statement, std::size_t count,
-                            const std::string& what, std::size_t optional = 0) {
+Numbers numbers(const Place& place, const Statement& statement, std::size_t count,
+                std::string_view what, std::size_t optional = 0) {
     const std::size_t given = statement.words.size() - 1;
     if (given < count || given > count + optional) {
         const std::string wanted =
             optional == 0 ? std::to_string(count)
                           : std::to_string(count) + " to " + std::to_string(count + optional);
-        place.fail(what + " expects " + wanted + " numbers, got " + std::to_string(given));
+        place.fail(std::string(what) + " expects " + wanted + " numbers, got " +
+                   std::to_string(given));
     }
-    std::vector<double> values;
+    Numbers values;
     for (std::size_t i = 1; i < statement.words.size(); ++i) {
         const std::string_view word = statement.words[i];
         double value = 0.0;
         const auto status = scene_lexer::parseNumber(word, value);
         if (status == scene_lexer::NumberStatus::invalid)
-            place.fail(what + ": '" + std::string(word) + "' is not a number");
+            place.fail(std::string(what) + ": '" + std::string(word) + "' is not a number");
         if (status == scene_lexer::NumberStatus::nonFinite)
-            place.fail(what + ": '" + std::string(word) + "' is not a finite number");
-        values.push_back(value);
+            place.fail(std::string(what) + ": '" + std::string(word) + "' is not a finite number");
+        values.values[values.count++] = value;
     }
     return values;
 }
 
-glm::dvec3 clampedColor(const std::vector<double>& values, std::size_t first) {
+glm::dvec3 clampedColor(const Numbers& values, std::size_t first) {
     return glm::clamp(glm::dvec3(values[first], values[first + 1], values[first + 2]), 0.0, 1.0);
 }
 
@@ -198,9 +211,9 @@ void readMtl(const MtlFile& file, SourceModel& model, std::map<std::string, std:
                 any = true;
             } else if (keyword == "Ke") {
                 if (!current) place.fail("Ke before any newmtl");
-                std::vector<double> rgb = numbers(place, statement, 1, "Ke", 2);
+                Numbers rgb = numbers(place, statement, 1, "Ke", 2);
                 if (rgb.size() == 2) place.fail("Ke expects 1 or 3 numbers, got 2");
-                if (rgb.size() == 1) rgb = {rgb[0], rgb[0], rgb[0]};
+                if (rgb.size() == 1) rgb = Numbers{{rgb[0], rgb[0], rgb[0]}, 3};
                 model.materials[*current].emission =
                     glm::max(glm::dvec3(rgb[0], rgb[1], rgb[2]), glm::dvec3(0.0));
             } else if (keyword == "Kd" || keyword == "Ks") {
@@ -210,9 +223,9 @@ void readMtl(const MtlFile& file, SourceModel& model, std::map<std::string, std:
                     (statement.words[1] == "spectral" || statement.words[1] == "xyz"))
                     place.fail(name + " " + std::string(statement.words[1]) +
                                " colours are not supported; use r g b");
-                std::vector<double> rgb = numbers(place, statement, 1, name, 2);
+                Numbers rgb = numbers(place, statement, 1, name, 2);
                 if (rgb.size() == 2) place.fail(name + " expects 1 or 3 numbers, got 2");
-                if (rgb.size() == 1) rgb = {rgb[0], rgb[0], rgb[0]};
+                if (rgb.size() == 1) rgb = Numbers{{rgb[0], rgb[0], rgb[0]}, 3};
                 Material& material = model.materials[*current].phong;
                 (keyword == "Kd" ? material.diffuse : material.specular) = clampedColor(rgb, 0);
             } else if (keyword == "Ns") {
@@ -261,18 +274,19 @@ bool isWholeNumber(std::string_view word) {
 
 // An OBJ index (1-based, or negative: counted back from the last so far) made 0-based.
 std::uint32_t resolveIndex(const Place& place, std::string_view word, std::size_t count,
-                           const std::string& what) {
+                           std::string_view what) {
     if (!isWholeNumber(word))
-        place.fail(what + " index '" + std::string(word) + "' is not a whole number");
+        place.fail(std::string(what) + " index '" + std::string(word) + "' is not a whole number");
     const std::string_view digits = word[0] == '+' ? word.substr(1) : word;
     long long index = 0;
     const bool huge = std::from_chars(digits.data(), digits.data() + digits.size(), index).ec !=
                       std::errc(); // out of range of 64 bits: out of range of any model too
     if (!huge && index == 0)
-        place.fail(what + " index 0: OBJ indices start at 1 (or -1 for the last)");
+        place.fail(std::string(what) + " index 0: OBJ indices start at 1 (or -1 for the last)");
     const long long resolved = index > 0 ? index - 1 : static_cast<long long>(count) + index;
     if (huge || resolved < 0 || resolved >= static_cast<long long>(count))
-        place.fail(what + " index " + (huge ? std::string(digits) : std::to_string(index)) +
+        place.fail(std::string(what) + " index " +
+                   (huge ? std::string(digits) : std::to_string(index)) +
                    " is out of range: " + std::to_string(count) + " " +
                    (what == "vertex"   ? "vertex positions"
                     : what == "normal" ? "normals"
@@ -282,21 +296,27 @@ std::uint32_t resolveIndex(const Place& place, std::string_view word, std::size_
 }
 
 SourceCorner parseCorner(const Place& place, std::string_view word, const SourceModel& model) {
-    std::vector<std::string_view> parts;
+    std::array<std::string_view, 3> parts; // v, vt, vn: a fourth part is an error below
+    std::size_t partCount = 0;
     for (std::size_t from = 0;;) {
         const std::size_t slash = word.find('/', from);
-        parts.push_back(word.substr(from, slash == std::string_view::npos ? slash : slash - from));
+        if (partCount == parts.size()) {
+            partCount = parts.size() + 1;
+            break;
+        }
+        parts[partCount++] =
+            word.substr(from, slash == std::string_view::npos ? slash : slash - from);
         if (slash == std::string_view::npos) break;
         from = slash + 1;
     }
-    if (parts.size() > 3 || parts[0].empty())
+    if (partCount > 3 || parts[0].empty())
         place.fail("face corner '" + std::string(word) + "' is not v, v/vt, v/vt/vn or v//vn");
     SourceCorner corner;
     corner.position = resolveIndex(place, parts[0], model.positions.size(), "vertex");
-    if (parts.size() >= 2 && !parts[1].empty())
+    if (partCount >= 2 && !parts[1].empty())
         corner.texcoord =
             resolveIndex(place, parts[1], model.texcoords.size(), "texture coordinate");
-    if (parts.size() == 3 && !parts[2].empty())
+    if (partCount == 3 && !parts[2].empty())
         corner.normal = resolveIndex(place, parts[2], model.normals.size(), "normal");
     return corner;
 }
@@ -324,12 +344,13 @@ SourceModel parseObj(std::string_view text, const std::string& fileName,
     std::size_t facesFellBack = 0;
     std::size_t fannedConcave = 0; // concave faces that could not be clipped
     int firstFannedLine = 0;
+    std::vector<SourceCorner> corners; // a face's, its storage reused from face to face
     forEachStatement(text, [&](const Statement& statement) {
         const Place place{fileName, statement.line};
         const std::string_view keyword = statement.words[0];
-        const std::string at = sceneLocation(fileName, statement.line);
+        auto at = [&] { return sceneLocation(fileName, statement.line); };
         if (keyword == "v") {
-            const std::vector<double> values = numbers(place, statement, 3, "v", 4);
+            const Numbers values = numbers(place, statement, 3, "v", 4);
             if (values.size() == 5)
                 place.fail("v expects 3, 4, 6 or 7 numbers (x y z [w], or x y z r g b), got 5");
             model.positions.emplace_back(values[0], values[1], values[2]);
@@ -338,16 +359,16 @@ SourceModel parseObj(std::string_view text, const std::string& fileName,
             model.colors.push_back(values.size() >= 6 ? std::optional(clampedColor(values, 3))
                                                       : std::nullopt);
         } else if (keyword == "vn") {
-            const std::vector<double> values = numbers(place, statement, 3, "vn");
+            const Numbers values = numbers(place, statement, 3, "vn");
             model.normals.emplace_back(values[0], values[1], values[2]);
         } else if (keyword == "vt") {
-            const std::vector<double> values = numbers(place, statement, 1, "vt", 2);
+            const Numbers values = numbers(place, statement, 1, "vt", 2);
             model.texcoords.emplace_back(values[0], values.size() > 1 ? values[1] : 0.0);
         } else if (keyword == "f") {
             const std::size_t count = statement.words.size() - 1;
             if (count < 3)
                 place.fail("a face needs at least 3 corners, got " + std::to_string(count));
-            std::vector<SourceCorner> corners;
+            corners.clear();
             for (std::size_t i = 1; i <= count; ++i)
                 corners.push_back(parseCorner(place, statement.words[i], model));
             for (const SourceCorner& corner : corners)
@@ -384,12 +405,12 @@ SourceModel parseObj(std::string_view text, const std::string& fileName,
             material = found == names.end() ? 0 : found->second;
             fellBack = found == names.end() && !missingLibraries.empty();
             if (found == names.end() && missingLibraries.empty())
-                model.warnings.push_back(at + "warning: unknown material '" + name +
+                model.warnings.push_back(at() + "warning: unknown material '" + name +
                                          "'; default material used");
         } else if (keyword == "vp" || keyword == "o" || keyword == "g" || keyword == "s") {
             // parameter-space vertices, object and group names, smoothing groups
         } else if (ignored.insert(std::string(keyword)).second) {
-            model.warnings.push_back(at + "warning: '" + std::string(keyword) +
+            model.warnings.push_back(at() + "warning: '" + std::string(keyword) +
                                      "' statements are ignored");
         }
     });
