@@ -124,13 +124,13 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
     std::vector<std::uint32_t> cornersOfTriangles;
     cornersOfTriangles.reserve(3 * triangles);
     packed.triangles.reserve(triangles);
-    auto packCorner = [&](const Vertex& vertex, std::int64_t texture) {
+    auto packCorner = [&](const Vertex& vertex, std::int64_t texture, glm::dvec2 texcoord) {
         const glm::dvec3& position = vertex.position;
         PackedVertex packedVertex{};
         packedVertex.position = toVec4(position);
         packedVertex.normal = toVec4(vertex.normal);
         packedVertex.material = materialIndex(vertex.material, texture);
-        if (textured) packedVertex.texcoord = glm::vec2(vertex.texcoord);
+        if (textured) packedVertex.texcoord = glm::vec2(texcoord);
         if (fp64) packedVertex.exactPosition = glm::dvec4(position, 0.0);
         // The position the GPU computes with: rounded to float in fp32.
         const glm::dvec3 corner = fp64 ? position : glm::dvec3(glm::vec3(position));
@@ -140,7 +140,7 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
     for (const Triangle& triangle : scene.triangles) {
         glm::uvec4 packedTriangle(0u);
         for (int k = 0; k < 3; ++k) {
-            packedTriangle[k] = packCorner(triangle.vertices[k], triangle.texture);
+            packedTriangle[k] = packCorner(triangle.vertices[k], -1, glm::dvec2(0.0));
         }
         packed.triangles.push_back(packedTriangle);
     }
@@ -150,10 +150,9 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
             const auto texture = triangleTexture(mesh, t);
             for (int k = 0; k < 3; ++k) {
                 const std::uint32_t v = mesh.triangles[t][k];
-                packedTriangle[k] =
-                    packCorner(Vertex{mesh.positions[v], mesh.normals[v],
-                                      cornerMaterial(mesh, t, v), vertexTexcoord(mesh, v)},
-                               texture ? std::int64_t(*texture) : -1);
+                packedTriangle[k] = packCorner(
+                    Vertex{mesh.positions[v], mesh.normals[v], cornerMaterial(mesh, t, v)},
+                    texture ? std::int64_t(*texture) : -1, vertexTexcoord(mesh, v));
             }
             packed.triangles.push_back(packedTriangle);
         }

@@ -158,10 +158,13 @@ SurfacePoint surfaceAt(const World& world, const Ray& ray, const Hit& hit) {
         p.material.specular = w.x * m0.specular + w.y * m1.specular + w.z * m2.specular;
         p.material.shininess = w.x * m0.shininess + w.y * m1.shininess + w.z * m2.shininess;
         p.mirrorWeight = w.x * mirrorWeight(m0) + w.y * mirrorWeight(m1) + w.z * mirrorWeight(m2);
-        if (tri.texture >= 0) // the material's kd then multiplies the texture's colour
-            p.material.diffuse *=
-                textureColor(world.scene.textures[std::size_t(tri.texture)].image,
-                             w.x * v[0].texcoord + w.y * v[1].texcoord + w.z * v[2].texcoord);
+        // A textured material's kd multiplies the texture's colour.
+        if (const auto texturing =
+                triangleTexturingAt(world.scene, std::size_t(hit.id - world.sphereCount))) {
+            const glm::dvec2* uv = texturing->texcoords;
+            p.material.diffuse *= textureColor(world.scene.textures[texturing->texture].image,
+                                               w.x * uv[0] + w.y * uv[1] + w.z * uv[2]);
+        }
         p.shadowPoint = p.position;
         if (world.shiftShadowOrigin) {
             const double facing = glm::dot(p.normal, ray.dir) > 0 ? -1.0 : 1.0;

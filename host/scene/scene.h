@@ -29,15 +29,11 @@ struct Vertex {
     glm::dvec3 position{0.0};
     glm::dvec3 normal{0.0}; // as given; may be unnormalised or zero
     Material material;
-    glm::dvec2 texcoord{0.0}; // a model's (Mesh::texcoords); a scene file has none
 };
 
 struct Triangle {
     Vertex vertices[3];
     std::int64_t line = 0;
-    // A model's triangle with a textured material: Scene::textures' index (the vertices'
-    // material.diffuse then multiplies the texture's colour, mesh.h); -1: none.
-    std::int64_t texture = -1;
 };
 
 struct Light {

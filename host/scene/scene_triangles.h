@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 std::size_t triangleCount(const Scene& scene);
@@ -17,6 +18,18 @@ Triangle meshTriangle(const Mesh& mesh, std::size_t t);
 
 // Triangle `index` in the numbering above; throws std::out_of_range past the last.
 Triangle triangleAt(const Scene& scene, std::size_t index);
+
+// A triangle's texture and its corners' texture coordinates: a model's triangle whose
+// material has a texture (the corners' material.diffuse then multiplies its colour, mesh.h).
+// Kept apart from Triangle, which every triangle of a scene file pays for.
+struct TriangleTexturing {
+    std::uint32_t texture = 0; // Scene::textures' index
+    glm::dvec2 texcoords[3];
+};
+
+// Triangle `index`'s texturing in the numbering above, if it has any; throws
+// std::out_of_range past the last triangle.
+std::optional<TriangleTexturing> triangleTexturingAt(const Scene& scene, std::size_t index);
 
 // Every triangle's line in its file, in the numbering above.
 std::vector<std::int64_t> triangleLines(const Scene& scene);

@@ -38,9 +38,23 @@ void appendMaterial(std::string& out, const Material& material) {
     }
 }
 
+// The scene format holds no textures: a textured model is written with the colours its
+// materials have without them (MTL's Kd, glTF's base colour factor), as
+// tools/obj_to_scene.py writes it. A copy, made only when the scene has textures.
+Scene withoutTextures(const Scene& scene) {
+    Scene copy = scene;
+    copy.textures.clear();
+    for (Mesh& mesh : copy.meshes)
+        for (MeshMaterial& material : mesh.materials)
+            material.texture.reset();
+    return copy;
+}
+
 } // namespace
 
-std::string sceneText(const Scene& scene) {
+std::string sceneText(const Scene& textured) {
+    if (!textured.textures.empty()) return sceneText(withoutTextures(textured));
+    const Scene& scene = textured;
     std::string out;
     out += std::to_string(scene.lights.size() + scene.spheres.size() + triangleCount(scene));
     out += '\n';

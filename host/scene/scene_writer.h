@@ -9,7 +9,8 @@
 
 // The scene as text: the count, amb:, then lights, spheres and triangles in that order.
 // Numbers are written with 9 significant digits ("%.9g", -0 as 0), which every float the
-// GPU is given survives; tools/obj_to_scene.py writes the same.
+// GPU is given survives; tools/obj_to_scene.py writes the same. Textured materials are
+// written with the colour they have without their texture, which the format cannot hold.
 std::string sceneText(const Scene& scene);
 
 // Writes sceneText to path through a .tmp file renamed into place, so that a failure never

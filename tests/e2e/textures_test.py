@@ -138,6 +138,18 @@ class TexturesRenderAsTheReferenceSamplesThem(unittest.TestCase):
         self.assert_matches_reference(self.model("checker", "checker.png"))
         check = run(RAYTRACER, os.path.join(OUTPUT, "checker.obj"), "--check")
         self.assertIn(b"\ntextures: 1 (16384 bytes of texels)\n", check.stdout)
+        # --save-scene cannot write the texture: the material keeps its Kd there, as the
+        # untextured model's does.
+        scenes = []
+        for name in ("checker", "plain_checker"):
+            if name == "plain_checker":
+                self.model(name, None)
+            saved = run(RAYTRACER, os.path.join(OUTPUT, name + ".obj"), "--save-scene",
+                        os.path.join(OUTPUT, name + ".scene"))
+            self.assertEqual(saved.returncode, 0, saved.stderr)
+            with open(os.path.join(OUTPUT, name + ".scene")) as text:
+                scenes.append(text.read())
+        self.assertEqual(scenes[0], scenes[1])
         self.write("globe.png", png_bytes(32, 16, checkerboard(32, 4)[:16]))
         self.assert_matches_reference(self.model("globe", "globe.png", uv_sphere(12, 24)))
 

@@ -28,7 +28,7 @@ namespace {
 // their bytes compares the values bit for bit (0.0 and -0.0 differ, as they should) and
 // the lines of objects read by different chunks.
 static_assert(sizeof(Sphere) == 12 * sizeof(double) + sizeof(std::int64_t));
-static_assert(sizeof(Triangle) == 3 * 16 * sizeof(double) + 2 * sizeof(std::int64_t));
+static_assert(sizeof(Triangle) == 3 * 14 * sizeof(double) + sizeof(std::int64_t));
 static_assert(sizeof(Light) == 6 * sizeof(double) + sizeof(std::int64_t));
 
 struct Outcome {
