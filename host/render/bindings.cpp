@@ -6,6 +6,12 @@ constexpr BindingInfo array(std::uint32_t binding, const char* name) {
     return {binding, BindingRole::SceneArray, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, name};
 }
 
+constexpr BindingInfo textureArray(std::uint32_t binding, const char* name) {
+    BindingInfo info = array(binding, name);
+    info.textureData = true;
+    return info;
+}
+
 // R32G32B32A32, R32G32 and R32 formats (float and uint) are ones every Vulkan device
 // supports for uniform texel buffers.
 constexpr BindingInfo texels(std::uint32_t binding, std::uint32_t source, VkFormat format,
@@ -56,9 +62,9 @@ constexpr std::array<BindingInfo, BINDING_COUNT> table() {
             "pixel story"),
         own(BINDING_KERNEL_STATUS, BindingRole::KernelStatus, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
             "kernel status"),
-        array(BINDING_VERTEX_TEXCOORDS, "texture coordinates"),
-        array(BINDING_MATERIAL_TEXTURES, "materials' textures"),
-        array(BINDING_TEXTURE_PIXELS, "texture pixels"),
+        textureArray(BINDING_VERTEX_TEXCOORDS, "texture coordinates"),
+        textureArray(BINDING_MATERIAL_TEXTURES, "materials' textures"),
+        textureArray(BINDING_TEXTURE_PIXELS, "texture pixels"),
         texels(BINDING_TEXCOORD_TEXELS, BINDING_VERTEX_TEXCOORDS, kVec2, 8, false),
         texels(BINDING_MATERIAL_TEXTURE_TEXELS, BINDING_MATERIAL_TEXTURES, kUvec4, 16, false),
         texels(BINDING_TEXTURE_PIXEL_TEXELS, BINDING_TEXTURE_PIXELS, kUint, 4, false),

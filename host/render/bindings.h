@@ -33,6 +33,9 @@ struct BindingInfo {
     VkFormat format = VK_FORMAT_UNDEFINED;
     std::uint32_t texelBytes = 0;
     bool doublesInFp64 = false;
+    // SceneArray only: the array holds texture data (texels, placements, coordinates), which
+    // the scene memory line and --bench report apart (GpuScene::textureBytes).
+    bool textureData = false;
 };
 
 // Every binding, indexed by its number.

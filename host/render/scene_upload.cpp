@@ -132,9 +132,7 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
     }
     scene.bytes = size;
     for (const ArrayView& array : arrays)
-        if (array.binding == BINDING_VERTEX_TEXCOORDS ||
-            array.binding == BINDING_MATERIAL_TEXTURES || array.binding == BINDING_TEXTURE_PIXELS)
-            scene.textureBytes += array.bytes;
+        if (kBindings[array.binding].textureData) scene.textureBytes += array.bytes;
     scene.sphereCount = static_cast<std::uint32_t>(packed.spheres.size());
     scene.triangleCount = static_cast<std::uint32_t>(packed.triangles.size());
     scene.lightCount = static_cast<std::uint32_t>(packed.lights.size());
