@@ -11,7 +11,7 @@
 # tests/fuzz/model_regressions/ for the other model readers): the fuzz_replay,
 # obj_fuzz_replay and model_fuzz_replay tests replay them in every build.
 # Seeds: tests/fuzz/seeds/, scenes/, and ../shared/scenes when present (read in place,
-# never copied); for the OBJ reader tests/fuzz/obj_seeds/. New inputs go to
+# never copied); for the OBJ reader tests/fuzz/obj_seeds/ and obj_corpus/. New inputs go to
 # build-fuzz/corpus-TARGET/, kept between runs.
 set -euo pipefail
 usage() { awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; }
@@ -52,7 +52,7 @@ fuzz() { # NAME TARGET SECONDS DICTIONARY SEED...
 fuzz "scene parser" scene_parser_fuzz "$seconds" tests/fuzz/scene.dict "${seeds[@]}"
 # The OBJ reader for half as long: its grammar is smaller.
 fuzz "OBJ model reader" obj_model_fuzz $(((seconds + 1) / 2)) tests/fuzz/obj.dict \
-    tests/fuzz/obj_seeds tests/fuzz/obj_regressions
+    tests/fuzz/obj_seeds tests/fuzz/obj_corpus tests/fuzz/obj_regressions
 # The other model readers (PLY, STL; GLB through assimp) for a quarter of the time.
 fuzz "model readers (PLY, STL; GLB through assimp)" model_file_fuzz $(((seconds + 3) / 4)) tests/fuzz/model.dict \
     tests/fuzz/model_seeds tests/fuzz/model_regressions

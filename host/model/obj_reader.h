@@ -1,31 +1,32 @@
 // Wavefront OBJ text (and the MTL files it names) to a SourceModel. The rules, which
 // tools/obj_to_scene.py follows too, are in docs/models.md: faces of 3 or more corners
 // (v, v/vt, v/vt/vn, v//vn; 1-based or negative indices), split into triangles
-// (polygon_triangulation.h: a fan when convex, ear clipping when concave); vn as given; `v x y z r
-// g b` colours; Kd, Ks and Ns of newmtl materials. Texture coordinates, groups and smoothing groups
-// are read and ignored. A malformed line is a SceneError "FILE:LINE: error: ..."; a binary file is
-// not an OBJ file.
+// (polygon_triangulation.h: a fan when convex, ear clipping when concave); vn as given; vt;
+// `v x y z r g b` colours; the materials of mtl_reader.h. Groups and smoothing groups are read
+// and ignored. A malformed line is a SceneError "FILE:LINE: error: ..."; a binary file is not
+// an OBJ file. A large text is read by all threads at once (obj_survey.h, obj_fill.h),
+// to the same model, warnings and first error as one pass.
 #pragma once
 
+#include "model/mtl_reader.h"
 #include "model/source_model.h"
 
+#include <cstddef>
 #include <filesystem>
-#include <functional>
-#include <optional>
 #include <string>
 #include <string_view>
 
-// A material library, looked up by the name an mtllib line gives: the path it has in
-// messages, and its text, or no text when there is no such file.
-struct MtlFile {
-    std::string path;
-    std::optional<std::string> text;
+// How the text is shared among threads: as many chunks as threads (0: workerThreads(),
+// base/parallel.h), none shorter than minChunkBytes. The model, its warnings and its errors
+// are the same whatever the split.
+struct ObjParseOptions {
+    unsigned threads = 0;
+    std::size_t minChunkBytes = 1u << 20;
 };
-using MtlLookup = std::function<MtlFile(const std::string& name)>;
 
 // fileName is used in messages; lookUpMtl finds the libraries that mtllib names.
-SourceModel parseObj(std::string_view text, const std::string& fileName,
-                     const MtlLookup& lookUpMtl);
+SourceModel parseObj(std::string_view text, const std::string& fileName, const MtlLookup& lookUpMtl,
+                     const ObjParseOptions& options = {});
 
 // The model in text, the file at path (whose name is used in messages), with the
 // libraries beside it that it names.

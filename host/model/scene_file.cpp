@@ -1,5 +1,6 @@
 #include "model/scene_file.h"
 
+#include "base/startup_phases.h"
 #include "model/assimp_model.h"
 #include "model/obj_reader.h"
 #include "model/ply_reader.h"
@@ -20,9 +21,16 @@ namespace {
 // A model made a scene, with the textures it names.
 Scene texturedScene(const SourceModel& model, const ModelSceneSetup& setup,
                     const std::string& name) {
+    const PhaseTimer timer("model");
     Scene scene = sceneFromModel(model, setup, name);
     loadTextures(scene, name, model.embeddedTextures);
     return scene;
+}
+
+// The file read by a model reader: the "read" phase.
+template <typename Read> SourceModel timedRead(Read read) {
+    const PhaseTimer timer("read");
+    return read();
 }
 
 } // namespace
@@ -36,13 +44,21 @@ Scene loadScene(const std::filesystem::path& path, const ModelSceneSetup& modelS
     const MappedFile file(name);
     const std::optional<OtherFormat> format = otherFileFormat(file.text());
     if (format == OtherFormat::Ply || (!format && isPlyPath(path)))
-        return texturedScene(readPly(file.text(), name), modelSetup, name);
+        return texturedScene(timedRead([&] { return readPly(file.text(), name); }), modelSetup,
+                             name);
     if (format == OtherFormat::Stl || (!format && isStlPath(path)))
-        return texturedScene(readStl(file.text(), name), modelSetup, name);
+        return texturedScene(timedRead([&] { return readStl(file.text(), name); }), modelSetup,
+                             name);
     if (format && *format != OtherFormat::Utf16Text)
-        return texturedScene(readAssimpModel(file.text(), path, format), modelSetup, name);
-    if (isObjPath(path)) return texturedScene(readObjFile(path, file.text()), modelSetup, name);
+        return texturedScene(timedRead([&] { return readAssimpModel(file.text(), path, format); }),
+                             modelSetup, name);
+    if (isObjPath(path))
+        return texturedScene(timedRead([&] { return readObjFile(path, file.text()); }), modelSetup,
+                             name);
     if (isAssimpPath(path) && !format)
-        return texturedScene(readAssimpModel(file.text(), path, std::nullopt), modelSetup, name);
+        return texturedScene(
+            timedRead([&] { return readAssimpModel(file.text(), path, std::nullopt); }), modelSetup,
+            name);
+    const PhaseTimer timer("read");
     return parseScene(file.text(), name);
 }

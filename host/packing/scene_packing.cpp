@@ -1,6 +1,7 @@
 #include "packing/scene_packing.h"
 
 #include "base/deduplicator.h"
+#include "base/startup_phases.h"
 #include "packing/flat_patches.h"
 #include "scene/scene_triangles.h"
 
@@ -341,12 +342,19 @@ void applyLeafOrder(PackedScene& packed, const Bvh& bvh) {
 }
 
 PackedScene packScene(const Scene& scene, Acceleration acceleration, Precision precision) {
+    auto start = std::chrono::steady_clock::now();
+    auto millisecondsSince = [](std::chrono::steady_clock::time_point from) {
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - from)
+            .count();
+    };
     PackedScene packed = packSceneInFileOrder(scene, precision);
-    const auto start = std::chrono::steady_clock::now();
+    recordPhase("pack", millisecondsSince(start));
+    start = std::chrono::steady_clock::now();
     Bvh bvh = buildBvh(primitiveBounds(packed));
     HierarchyReport& report = packed.hierarchy;
-    report.buildMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    report.buildMs = millisecondsSince(start);
+    recordPhase("hierarchy", report.buildMs);
+    start = std::chrono::steady_clock::now();
     applyLeafOrder(packed, bvh);
     packed.sphereOrder = std::move(bvh.sphereOrder);
     packed.triangleOrder = std::move(bvh.triangleOrder);
@@ -355,6 +363,7 @@ PackedScene packScene(const Scene& scene, Acceleration acceleration, Precision p
     report.depth = bvh.depth;
     report.used = useHierarchy(acceleration, report.primitives);
     if (report.used) packed.bvhNodes = std::move(bvh.nodes);
+    recordPhase("pack", millisecondsSince(start)); // the leaf order applied
     return packed;
 }
 

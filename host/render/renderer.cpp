@@ -2,6 +2,7 @@
 
 #include "base/notes.h"
 #include "base/scope_guard.h"
+#include "base/startup_phases.h"
 #include "gpu/vk_check.h"
 #include "packing/workgroup_order.h"
 #include "render/bindings.h"
@@ -185,13 +186,17 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
     note("%s\n", accelerationSummary(packed.hierarchy).c_str());
     renderer.sources = slotSources(scene, packed);
     renderer.specialization = traceSpecialization(packed, settings);
-    renderer.scene = uploadScene(context, packed, renderer.specialization.texelReads);
+    {
+        const PhaseTimer timer("upload");
+        renderer.scene = uploadScene(context, packed, renderer.specialization.texelReads);
+    }
     packed = PackedScene{}; // the GPU holds it now
     // The upload turns texel reads off for an array beyond maxTexelBufferElements.
     renderer.specialization.texelReads = renderer.scene.texelReads;
     if (!renderer.scene.storageReadsNote.empty())
         note("%s\n", renderer.scene.storageReadsNote.c_str());
     const KernelSource source{settings.shaderDirectory, settings.cacheDirectory};
+    const PhaseTimer kernelTimer("kernel");
     if (kernels) {
         renderer.pipeline =
             cachedTracePipeline(*kernels, context, source, renderer.specialization, precision);

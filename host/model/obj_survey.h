@@ -1,0 +1,39 @@
+// The OBJ reader's first pass over each chunk of a file, all chunks at once (obj_reader.h):
+// how many positions, normals, texture coordinates, faces and triangles the chunk's
+// statements make, so that the second pass writes each chunk straight into the model's
+// arrays at its own place; and, in order, the statements whose effect crosses chunks
+// (mtllib, usemtl) and the keywords the reader ignores, which the reader then replays in
+// file order. The counts are exact for a chunk the second pass reads without an error.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+// What an OBJ statement's keyword makes the reader do.
+enum class ObjKeyword { position, normal, texcoord, face, mtllib, usemtl, skipped, ignored };
+ObjKeyword objKeyword(std::string_view keyword);
+
+struct ObjEvent {
+    ObjKeyword kind = ObjKeyword::usemtl; // mtllib, usemtl or ignored
+    int line = 0;                         // the chunk's, from 1
+    std::size_t facesBefore = 0;          // the chunk's faces before it
+    // mtllib: the libraries' names; usemtl: the material's name; ignored: the keyword.
+    std::vector<std::string> words;
+};
+
+struct ObjChunkSurvey {
+    int lines = 0; // physical lines
+    std::size_t positions = 0, normals = 0, texcoords = 0;
+    std::size_t faces = 0, facePositions = 0, triangles = 0;
+    std::vector<ObjEvent> events; // an ignored keyword only where the chunk first has it
+};
+
+// Where each of up to `threads` chunks of text starts (0: workerThreads(), base/parallel.h):
+// 0, then at each further equal share the start of the next line that begins a statement
+// (the line before it does not end in a backslash). No chunk is shorter than minChunkBytes.
+std::vector<std::size_t> objChunkStarts(std::string_view text, unsigned threads,
+                                        std::size_t minChunkBytes);
+
+ObjChunkSurvey surveyObjChunk(std::string_view chunk);

@@ -1,0 +1,106 @@
+// The OBJ reader on all threads (host/model/obj_survey.h, obj_fill.h): chunks start only
+// where a statement starts, and a text read in chunks gives the model, the warnings and
+// the first error of one pass, whichever chunk or step (a chunk's statement, a library
+// read in the replay) meets it. obj_fuzz_replay holds every fuzz input to the same.
+#include "model/obj_reader.h"
+#include "model/obj_survey.h"
+#include "scene/scene_error.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace {
+
+// A library named bad.mtl cannot be read; every other one is missing.
+MtlFile lookUp(const std::string& name) {
+    if (name == "bad.mtl") throw SceneError("bad.mtl", 0, "not a regular file");
+    if (name == "red.mtl") return MtlFile{name, "newmtl red\nKd 1 0 0\n"};
+    return MtlFile{name, std::nullopt};
+}
+
+// The model in words, or its error: what one pass and every split must agree on.
+std::string outcome(const std::string& text, unsigned chunks) {
+    try {
+        const SourceModel model = parseObj(text, "m.obj", lookUp, ObjParseOptions{chunks, 1});
+        std::string words = std::to_string(model.positions.size()) + " positions, " +
+                            std::to_string(model.triangles.size()) + " triangles;";
+        for (const SourceTriangle& triangle : model.triangles)
+            words += " " + std::to_string(triangle.corners[2].position) + "@" +
+                     std::to_string(triangle.line) + "m" + std::to_string(triangle.material);
+        for (const std::string& warning : model.warnings)
+            words += "\n" + warning;
+        return words;
+    } catch (const SceneError& error) {
+        return error.what();
+    }
+}
+
+// A text of `faces` triangles, a v line and an f line each after two shared positions, with
+// the line `extra` put in as line `at` (none at 0).
+std::string triangles(int faces, int at = 0, const std::string& extra = "") {
+    std::vector<std::string> lines{"v 0 0 0", "v 1 0 0"};
+    for (int i = 0; i < faces; ++i) {
+        lines.push_back("v " + std::to_string(i) + " 1 0");
+        lines.push_back("f 1 2 -1");
+    }
+    if (at > 0) lines.insert(lines.begin() + (at - 1), extra);
+    std::string text;
+    for (const std::string& line : lines)
+        text += line + "\n";
+    return text;
+}
+
+TEST(ObjChunks, ChunksStartAfterALineThatIsNotContinued) {
+    // Every line but the last of each pair continues on the next: LF, CRLF and CR.
+    const std::string text = "v 1 \\\n2 3\nv 1 \\\r\n2 3\r\nv 1 \\\r2 3\rf 1 2 3\n";
+    for (unsigned chunks = 2; chunks <= 8; ++chunks)
+        for (const std::size_t start : objChunkStarts(text, chunks, 1)) {
+            if (start == 0) continue;
+            ASSERT_EQ(text[start - 1], '\n') << start;
+            const std::size_t end = text[start - 2] == '\r' ? start - 2 : start - 1;
+            EXPECT_NE(text[end - 1], '\\') << "chunk at " << start << " of " << chunks;
+        }
+}
+
+TEST(ObjChunks, AnyChunkCountGivesTheModelAndWarningsOfOnePass) {
+    const std::string text = "mtllib red.mtl missing.mtl\n" + triangles(40, 30, "usemtl red") +
+                             "usemtl nothing\nf 1 2 3\nl 1 2\nf 1 2 3 4\n";
+    const std::string whole = outcome(text, 1);
+    EXPECT_NE(whole.find("42 positions, 43 triangles"), std::string::npos) << whole;
+    EXPECT_NE(whole.find("m.obj:1: warning: material library missing.mtl not found; 2 of 42"),
+              std::string::npos)
+        << whole;
+    for (unsigned chunks = 2; chunks <= 9; ++chunks)
+        EXPECT_EQ(outcome(text, chunks), whole) << chunks << " chunks";
+}
+
+TEST(ObjChunks, TheFirstErrorInFileOrderWinsWhereverItIs) {
+    // A face out of range late in the text, a library that cannot be read early, and the
+    // other way round; and two errors in statements, far apart.
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"mtllib bad.mtl\n" + triangles(30, 50, "f 1 2 999"), "bad.mtl: error: not a regular"},
+        {triangles(30, 5, "f 1 2 999") + "mtllib bad.mtl\n", "m.obj:5: error: vertex index 999"},
+        {triangles(30, 7, "v 1 2") + "f 0 1 2\n", "m.obj:7: error: v expects 3"},
+        {triangles(30, 57, "vn 1 2 x"), "m.obj:57: error: vn: 'x' is not a number"},
+    };
+    for (const auto& [text, expected] : cases) {
+        const std::string whole = outcome(text, 1);
+        EXPECT_NE(whole.find(expected), std::string::npos) << whole;
+        for (unsigned chunks = 2; chunks <= 9; ++chunks)
+            EXPECT_EQ(outcome(text, chunks), whole) << chunks << " chunks";
+    }
+}
+
+TEST(ObjChunks, IndicesCountBackAcrossChunks) {
+    // Each face's -1 is the position on the line before it, in whatever chunk that is.
+    const std::string text = triangles(60);
+    const std::string whole = outcome(text, 1);
+    EXPECT_NE(whole.find(" 61@122m0"), std::string::npos) << whole;
+    for (unsigned chunks = 2; chunks <= 9; ++chunks)
+        EXPECT_EQ(outcome(text, chunks), whole) << chunks << " chunks";
+}
+
+} // namespace
