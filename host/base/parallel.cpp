@@ -82,3 +82,13 @@ void parallelForPerThread(std::size_t count, const std::function<IndexBody()>& m
         thread.join();
     if (error) std::rethrow_exception(error);
 }
+
+std::vector<IndexRange> splitRange(std::size_t count, std::size_t grain) {
+    const std::size_t most = std::max<std::size_t>(1, 4 * std::size_t(workerThreads()));
+    const std::size_t ranges =
+        std::clamp<std::size_t>(count / std::max<std::size_t>(grain, 1), 1, most);
+    std::vector<IndexRange> split(ranges);
+    for (std::size_t k = 0; k < ranges; ++k)
+        split[k] = {count * k / ranges, count * (k + 1) / ranges};
+    return split;
+}

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <vector>
 
 // The threads host work may use: setWorkerThreads's count, else one per hardware thread.
 unsigned workerThreads();
@@ -27,3 +28,11 @@ void parallelFor(std::size_t count, const std::function<void(std::size_t)>& body
 using IndexBody = std::function<void(std::size_t)>;
 void parallelForPerThread(std::size_t count, const std::function<IndexBody()>& makeBody,
                           unsigned threads = 0);
+
+// [0, count) cut into consecutive ranges, a few per thread and none shorter than `grain`
+// (but the last): how a loop over a large array is shared (parallelFor over the ranges), and,
+// for a reduction that must give the bits of one pass, the order its parts are combined in.
+struct IndexRange {
+    std::size_t begin = 0, end = 0;
+};
+std::vector<IndexRange> splitRange(std::size_t count, std::size_t grain);

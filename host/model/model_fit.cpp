@@ -2,6 +2,8 @@
 // that both place a model at the same bits.
 #include "model/model_fit.h"
 
+#include "base/parallel.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -21,20 +23,43 @@ double distanceForShare(const std::vector<glm::dvec3>& turned, double tanY, doub
     return distance;
 }
 
+// The silhouette's extent in shares of the frame, over some of the positions.
+struct Silhouette {
+    double left = 0.0, right = 0.0, bottom = 0.0, top = 0.0;
+    bool behind = false; // a position not in front of the eye
+};
+
 // Half the larger of the silhouette's width and height as shares of the frame's, the model's
 // centre at distance straight ahead; infinite when a position is not in front of the eye.
+// Found on all threads: minima and maxima are the same in any order.
 double halfSpan(const std::vector<glm::dvec3>& turned, double tanY, double tanX, double distance) {
-    double left = 0.0, right = 0.0, bottom = 0.0, top = 0.0;
-    for (const glm::dvec3& v : turned) {
-        const double depth = distance - v.z;
-        if (!(depth > 0.0)) return std::numeric_limits<double>::infinity();
-        const double x = v.x / (depth * tanX), y = v.y / (depth * tanY);
-        left = std::min(left, x);
-        right = std::max(right, x);
-        bottom = std::min(bottom, y);
-        top = std::max(top, y);
+    const std::vector<IndexRange> ranges = splitRange(turned.size(), 16384);
+    std::vector<Silhouette> parts(ranges.size());
+    parallelFor(ranges.size(), [&](std::size_t k) {
+        Silhouette& part = parts[k];
+        for (std::size_t i = ranges[k].begin; i < ranges[k].end; ++i) {
+            const glm::dvec3& v = turned[i];
+            const double depth = distance - v.z;
+            if (!(depth > 0.0)) {
+                part.behind = true;
+                return;
+            }
+            const double x = v.x / (depth * tanX), y = v.y / (depth * tanY);
+            part.left = std::min(part.left, x);
+            part.right = std::max(part.right, x);
+            part.bottom = std::min(part.bottom, y);
+            part.top = std::max(part.top, y);
+        }
+    });
+    Silhouette all;
+    for (const Silhouette& part : parts) {
+        if (part.behind) return std::numeric_limits<double>::infinity();
+        all.left = std::min(all.left, part.left);
+        all.right = std::max(all.right, part.right);
+        all.bottom = std::min(all.bottom, part.bottom);
+        all.top = std::max(all.top, part.top);
     }
-    return std::max(right - left, top - bottom) / 2.0;
+    return std::max(all.right - all.left, all.top - all.bottom) / 2.0;
 }
 
 constexpr int kFitSteps = 40;

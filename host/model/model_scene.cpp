@@ -3,11 +3,12 @@
 // the same scene text; docs/models.md states the rules.
 #include "model/model_scene.h"
 
-#include "base/deduplicator.h"
+#include "base/parallel.h"
 #include "model/exact_vectors.h"
 #include "model/far_vertices.h"
 #include "model/model_fit.h"
 #include "model/model_lights.h"
+#include "model/model_mesh.h"
 #include "scene/scene_error.h"
 
 #include <algorithm>
@@ -45,77 +46,6 @@ glm::dvec3 turnUp(glm::dvec3 v, UpAxis up) {
     return v;
 }
 
-// Newell's sum of cross products over a polygon: its normal scaled by twice its area, so
-// adding such sums weights faces by area; per polygon, so how a quad was split does not
-// tilt its corners' normals.
-// The positions are multiplied by scale, a power of two, which changes no rounding.
-glm::dvec3 newellNormal(const std::vector<glm::dvec3>& positions,
-                        std::span<const std::uint32_t> face, double scale) {
-    glm::dvec3 normal(0.0);
-    for (std::size_t i = 1; i + 1 < face.size(); ++i) {
-        const glm::dvec3 a = positions[face[0]] * scale;
-        normal += glm::cross(positions[face[i]] * scale - a, positions[face[i + 1]] * scale - a);
-    }
-    return normal;
-}
-
-// The power of two that brings the largest coordinate into [0.5, 1): the Newell normals of
-// a model at 1e300 would overflow to infinity (and its normals be NaN), while for every
-// other model the scaled arithmetic rounds exactly as the unscaled one, so its normals are
-// the same bits.
-double newellScale(const std::vector<glm::dvec3>& positions) {
-    double largest = 0.0;
-    for (const glm::dvec3& p : positions)
-        largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-    int exponent = 0;
-    std::frexp(largest, &exponent);
-    return std::ldexp(1.0, -exponent);
-}
-
-// The smooth normals of corners without one: for face f and its position p, the
-// normalised sum of the Newell normals of the faces around p (each face once, in file
-// order) whose unit normal is within the crease angle of f's, f itself always included.
-// Faces left out of the scene (leftOut[f], or none when it is empty) count for no corner.
-class SmoothNormals {
-  public:
-    SmoothNormals(const SourceModel& model, const std::vector<glm::dvec3>& positions,
-                  double creaseDegrees, const std::vector<bool>& leftOut)
-        : cosine_(std::cos(creaseDegrees * (kPi / 180.0))), everywhere_(creaseDegrees >= 180.0) {
-        facesAround_.resize(positions.size());
-        const double scale = newellScale(positions);
-        for (std::size_t f = 0; f < faceCount(model); ++f) {
-            newell_.push_back(newellNormal(positions, facePositions(model, f), scale));
-            unit_.push_back(normalizedOrZero(newell_.back()));
-            if (!leftOut.empty() && leftOut[f]) continue;
-            for (const std::uint32_t p :
-                 facePositions(model, f)) // each face once, though p repeats
-                if (facesAround_[p].empty() || facesAround_[p].back() != f)
-                    facesAround_[p].push_back(static_cast<std::uint32_t>(f));
-        }
-    }
-
-    glm::dvec3 at(std::uint32_t face, std::uint32_t position) const {
-        glm::dvec3 sum(0.0);
-        for (const std::uint32_t other : facesAround_[position])
-            if (everywhere_ || other == face || dot(unit_[face], unit_[other]) >= cosine_)
-                sum += newell_[other];
-        return normalizedOrZero(sum);
-    }
-
-  private:
-    double cosine_;
-    bool everywhere_;
-    std::vector<glm::dvec3> newell_, unit_;
-    std::vector<std::vector<std::uint32_t>> facesAround_;
-};
-
-bool isDegenerate(const std::vector<glm::dvec3>& positions, const SourceTriangle& triangle) {
-    const std::uint32_t a = triangle.corners[0].position, b = triangle.corners[1].position,
-                        c = triangle.corners[2].position;
-    if (a == b || b == c || a == c) return true;
-    return length(glm::cross(positions[b] - positions[a], positions[c] - positions[a])) == 0.0;
-}
-
 // Where the model goes: p -> turn(p - centre) * scale + offset, the turn being its view's.
 struct Placement {
     glm::dvec3 centre{0.0};
@@ -143,35 +73,52 @@ std::pair<glm::dvec3, glm::dvec3> boxOf(const std::vector<glm::dvec3>& positions
 // side) to the centre. A closed solid encloses its centre too, but its faces turn their
 // backs to it. The same arithmetic as tools/obj_to_scene.py's.
 bool enclosesItsCentre(const std::vector<glm::dvec3>& positions,
-                       const std::vector<glm::uvec3>& triangles, glm::dvec3 centre) {
+                       const std::vector<SourceTriangle>& triangles,
+                       const std::vector<TriangleFate>& fates, glm::dvec3 centre) {
+    // The nearest triangle a ray meets, found on all threads: each range's first nearest,
+    // the ranges combined in order, so that a tie goes to the first in file order as in one
+    // pass.
+    struct Nearest {
+        double distance = std::numeric_limits<double>::infinity();
+        bool front = false;
+    };
+    const std::vector<IndexRange> ranges = splitRange(triangles.size(), 16384);
+    std::vector<Nearest> nearestIn(ranges.size());
     int facing = 0, away = 0;
     for (int i = -1; i <= 1; ++i)
         for (int j = -1; j <= 1; ++j)
             for (int k = -1; k <= 1; ++k) {
                 if (i == 0 && j == 0 && k == 0) continue;
                 const glm::dvec3 d = normalizedOrZero(glm::dvec3(i, j, k));
-                double nearest = std::numeric_limits<double>::infinity();
-                bool front = false;
-                for (const glm::uvec3& t : triangles) {
-                    const glm::dvec3 a = positions[t.x], e1 = positions[t.y] - a,
-                                     e2 = positions[t.z] - a;
-                    const glm::dvec3 p = glm::cross(d, e2);
-                    const double det = dot(e1, p);
-                    if (det == 0.0) continue;
-                    const glm::dvec3 s = centre - a;
-                    const double u = dot(s, p) / det;
-                    if (u < 0.0 || u > 1.0) continue;
-                    const glm::dvec3 q = glm::cross(s, e1);
-                    const double v = dot(d, q) / det;
-                    if (v < 0.0 || u + v > 1.0) continue;
-                    const double distance = dot(e2, q) / det;
-                    if (distance > 0.0 && distance < nearest) {
-                        nearest = distance;
-                        front = dot(glm::cross(e1, e2), d) < 0.0;
+                parallelFor(ranges.size(), [&](std::size_t r) {
+                    Nearest nearest;
+                    for (std::size_t n = ranges[r].begin; n < ranges[r].end; ++n) {
+                        if (fates[n] != TriangleFate::kept) continue;
+                        const SourceCorner* t = triangles[n].corners;
+                        const glm::dvec3 a = positions[t[0].position],
+                                         e1 = positions[t[1].position] - a,
+                                         e2 = positions[t[2].position] - a;
+                        const glm::dvec3 p = glm::cross(d, e2);
+                        const double det = dot(e1, p);
+                        if (det == 0.0) continue;
+                        const glm::dvec3 s = centre - a;
+                        const double u = dot(s, p) / det;
+                        if (u < 0.0 || u > 1.0) continue;
+                        const glm::dvec3 q = glm::cross(s, e1);
+                        const double v = dot(d, q) / det;
+                        if (v < 0.0 || u + v > 1.0) continue;
+                        const double distance = dot(e2, q) / det;
+                        if (distance > 0.0 && distance < nearest.distance)
+                            nearest = {distance, dot(glm::cross(e1, e2), d) < 0.0};
                     }
-                }
-                if (nearest == std::numeric_limits<double>::infinity()) return false; // open
-                (front ? facing : away) += 1;
+                    nearestIn[r] = nearest;
+                });
+                Nearest nearest;
+                for (const Nearest& in : nearestIn)
+                    if (in.distance < nearest.distance) nearest = in;
+                if (nearest.distance == std::numeric_limits<double>::infinity())
+                    return false; // open
+                (nearest.front ? facing : away) += 1;
                 if (away > 6) return false; // a solid, or a room turned inside out
             }
     return facing >= 20;
@@ -295,24 +242,14 @@ std::optional<std::string> lyingDown(const ModelPlacement& model) {
            "one, give --up z";
 }
 
-// A model's corner as a mesh vertex: its position, its texture coordinates' index and its
-// normal, bit for bit, so that corners that agree on all three share a vertex (and its
-// colour, which goes with the position).
-struct CornerKey {
-    std::uint32_t position = 0;
-    std::uint32_t texcoord = kNoTexcoord;
-    glm::dvec3 normal{0.0};
-};
-
 } // namespace
 
 Scene sceneFromModel(const SourceModel& model, const ModelSceneSetup& setup,
                      const std::string& fileName) {
-    std::vector<glm::dvec3> positions, normals;
-    for (const glm::dvec3& p : model.positions)
-        positions.push_back(turnUp(p, setup.up));
-    for (const glm::dvec3& n : model.normals)
-        normals.push_back(turnUp(n, setup.up));
+    std::vector<glm::dvec3> positions(model.positions.size()), normals(model.normals.size());
+    auto up = [&](const glm::dvec3& v) { return turnUp(v, setup.up); };
+    std::transform(model.positions.begin(), model.positions.end(), positions.begin(), up);
+    std::transform(model.normals.begin(), model.normals.end(), normals.begin(), up);
 
     // The fit, the floor and the rig are for the model without positions far beyond it.
     const std::vector<bool> far = farPositions(model.positions);
@@ -334,68 +271,25 @@ Scene sceneFromModel(const SourceModel& model, const ModelSceneSetup& setup,
                          said.message + ": nothing is left to render");
     }
     // A room (it encloses its centre) is seen from inside unless a view was asked for.
+    const std::vector<TriangleFate> fates = triangleFates(model, positions, farFaces);
     bool inside = false;
     if (setup.fit && setup.insideWhenEnclosed) {
-        std::vector<glm::uvec3> corners;
-        for (const SourceTriangle& t : model.triangles)
-            if (!(anyFar && farFaces[t.face]) && !isDegenerate(positions, t))
-                corners.emplace_back(t.corners[0].position, t.corners[1].position,
-                                     t.corners[2].position);
         const auto [low, high] = boxOf(kept);
-        inside = enclosesItsCentre(positions, corners, (low + high) / 2.0);
+        inside = enclosesItsCentre(positions, model.triangles, fates, (low + high) / 2.0);
     }
     const Placement placement = inside ? insidePlacement(kept) : placementOf(kept, setup);
-    auto place = [&](glm::dvec3 p) { return placement.place(p); };
-    // Made when a corner first needs one: a model that gives every normal never pays for it.
-    std::optional<SmoothNormals> smooth;
 
     Scene scene;
     scene.ambient = setup.ambient;
     scene.warnings = model.warnings;
-    Mesh mesh;
+    Mesh mesh = modelMesh(model, positions, normals, fates, setup.creaseDegrees, farFaces,
+                          {[&](const glm::dvec3& p) { return placement.place(p); },
+                           [&](const glm::dvec3& n) { return placement.turn.apply(n); }});
     mesh.materials = model.materials;
-    const bool anyColor = std::any_of(model.colors.begin(), model.colors.end(),
-                                      [](const auto& color) { return color.has_value(); });
-    std::vector<CornerKey> corners; // one per mesh vertex
-    Deduplicator<CornerKey> vertexOf(corners, model.positions.size());
-    std::size_t degenerate = 0, farTriangles = 0;
-    for (const SourceTriangle& source : model.triangles) {
-        if (anyFar && farFaces[source.face]) {
-            ++farTriangles;
-            continue;
-        }
-        if (isDegenerate(positions, source)) {
-            ++degenerate;
-            continue;
-        }
-        glm::uvec3 triangle;
-        for (int k = 0; k < 3; ++k) {
-            const SourceCorner& corner = source.corners[k];
-            CornerKey key;
-            key.position = corner.position;
-            key.texcoord = corner.texcoord;
-            if (!corner.normal && !smooth)
-                smooth.emplace(model, positions, setup.creaseDegrees, farFaces);
-            key.normal =
-                corner.normal ? normals[*corner.normal] : smooth->at(source.face, corner.position);
-            const std::size_t before = corners.size();
-            triangle[k] = vertexOf.indexOf(key);
-            if (corners.size() == before) continue; // a vertex already made
-            mesh.positions.push_back(place(positions[corner.position]));
-            mesh.normals.push_back(placement.turn.apply(key.normal)); // turned with the model
-            if (!model.texcoords.empty())
-                mesh.texcoords.push_back(corner.texcoord == kNoTexcoord
-                                             ? glm::dvec2(0.0)
-                                             : model.texcoords[corner.texcoord]);
-            if (anyColor) {
-                const auto& color = model.colors[corner.position];
-                mesh.colors.push_back(color ? glm::dvec4(*color, 1.0) : glm::dvec4(0.0));
-            }
-        }
-        mesh.triangles.push_back(triangle);
-        mesh.triangleMaterials.push_back(source.material);
-        mesh.triangleLines.push_back(source.line);
-    }
+    const auto farTriangles =
+        static_cast<std::size_t>(std::count(fates.begin(), fates.end(), TriangleFate::far));
+    const auto degenerate =
+        static_cast<std::size_t>(std::count(fates.begin(), fates.end(), TriangleFate::degenerate));
     if (anyFar) {
         const FarPositions said = describeFar(model, far, farTriangles);
         if (mesh.triangles.empty())

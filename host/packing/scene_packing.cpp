@@ -145,15 +145,32 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
         }
         packed.triangles.push_back(packedTriangle);
     }
+    // A mesh's corner packs the same as any earlier corner of its vertex whose triangle has
+    // the same material: what that one got is used again, rather than three look-ups a
+    // triangle in tables too large for the cache. The indices are those of packing each.
+    struct PackedCorner {
+        std::uint32_t material = UINT32_MAX; // the mesh's: none yet
+        std::uint32_t vertex = 0, corner = 0;
+    };
+    std::vector<PackedCorner> packedCorners;
     for (const Mesh& mesh : scene.meshes) {
+        packedCorners.assign(mesh.positions.size(), PackedCorner{});
         for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
             glm::uvec4 packedTriangle(0u);
             const auto texture = triangleTexture(mesh, t);
             for (int k = 0; k < 3; ++k) {
                 const std::uint32_t v = mesh.triangles[t][k];
-                packedTriangle[k] = packCorner(
-                    Vertex{mesh.positions[v], mesh.normals[v], cornerMaterial(mesh, t, v)},
-                    texture ? std::int64_t(*texture) : -1, vertexTexcoord(mesh, v));
+                PackedCorner& done = packedCorners[v];
+                if (done.material != mesh.triangleMaterials[t]) {
+                    done.vertex = packCorner(
+                        Vertex{mesh.positions[v], mesh.normals[v], cornerMaterial(mesh, t, v)},
+                        texture ? std::int64_t(*texture) : -1, vertexTexcoord(mesh, v));
+                    done.corner = cornersOfTriangles.back();
+                    done.material = mesh.triangleMaterials[t];
+                } else {
+                    cornersOfTriangles.push_back(done.corner);
+                }
+                packedTriangle[k] = done.vertex;
             }
             packed.triangles.push_back(packedTriangle);
         }

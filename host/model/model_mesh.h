@@ -1,0 +1,37 @@
+// A model's triangles as one indexed mesh (model_scene.h): which triangles it gets, and its
+// vertices, corners that agree bit for bit on position, texture coordinates and normal
+// sharing one, numbered in order of first appearance. The normals a corner lacks are
+// smooth_normals.h's. Shared among the host's threads where the order cannot change a bit.
+#pragma once
+
+#include "model/source_model.h"
+#include "scene/mesh.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+// What becomes of a model's triangle: the mesh gets it, or it is left out for using a
+// position far beyond the others (far_vertices.h), or as degenerate (two corners at one
+// position, or no area).
+enum class TriangleFate : std::uint8_t { kept, far, degenerate };
+
+// Each triangle's fate; farFaces: the faces that use a far position (empty: none).
+// positions: the model's, as turned up.
+std::vector<TriangleFate> triangleFates(const SourceModel& model,
+                                        const std::vector<glm::dvec3>& positions,
+                                        const std::vector<bool>& farFaces);
+
+// Where a vertex goes: its position placed, its normal turned with the model.
+struct VertexPlacement {
+    std::function<glm::dvec3(const glm::dvec3&)> place, turn;
+};
+
+// The kept triangles as a mesh (its materials not set): positions and normals as turned up,
+// creaseDegrees and farFaces for the smooth normals.
+Mesh modelMesh(const SourceModel& model, const std::vector<glm::dvec3>& positions,
+               const std::vector<glm::dvec3>& normals, const std::vector<TriangleFate>& fates,
+               double creaseDegrees, const std::vector<bool>& farFaces,
+               const VertexPlacement& placement);

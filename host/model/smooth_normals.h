@@ -1,0 +1,31 @@
+// The normals a model's corners get when its file gives none (docs/models.md): for face f
+// and its position p, the normalised sum of the Newell normals of the faces around p (each
+// face once, in file order) whose unit normal is within the crease angle of f's, f itself
+// always included. The same arithmetic as tools/obj_to_scene.py's, operation for operation.
+#pragma once
+
+#include "model/source_model.h"
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+class SmoothNormals {
+  public:
+    // positions: the model's, as turned up; faces left out of the scene (leftOut[f], or
+    // none when it is empty) count for no corner.
+    SmoothNormals(const SourceModel& model, const std::vector<glm::dvec3>& positions,
+                  double creaseDegrees, const std::vector<bool>& leftOut);
+
+    glm::dvec3 at(std::uint32_t face, std::uint32_t position) const;
+
+  private:
+    double cosine_;
+    bool everywhere_;
+    std::vector<glm::dvec3> newell_, unit_; // per face
+    // The faces around position p: faces_[start_[p]] up to faces_[start_[p + 1]].
+    std::vector<std::size_t> start_;
+    std::vector<std::uint32_t> faces_;
+};
