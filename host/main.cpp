@@ -15,6 +15,7 @@
 #include "compare_command.h"
 #include "gpu/cpu_driver.h"
 #include "gpu/device_list.h"
+#include "gpu/limit_overrides.h"
 #include "model/scene_file.h"
 #include "render/headless.h"
 #include "render/interrupt.h"
@@ -119,7 +120,8 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
     Options options = parseOptions(argc, argv);
     setQuiet(options.quiet);
     requestCpuDriverThreads(options.cpuThreads); // before any Vulkan call reads it
-    setWorkerThreads(options.cpuThreads);        // the host's own threads, the same count
+    setLimitOverrides({options.maxStorageRange, options.maxAllocation});
+    setWorkerThreads(options.cpuThreads); // the host's own threads, the same count
     if (options.showHelp) {
         std::cout << usageText();
         return kSuccess;

@@ -130,6 +130,8 @@ std::string commandLine(const Options& options) {
     addSwitch("--general-kernel", options.generalKernel);
     addSwitch("--count-work", options.countWork);
     addSwitch("--storage-reads", options.storageReads);
+    addCount("--max-storage-range", options.maxStorageRange, 0);
+    addCount("--max-allocation", options.maxAllocation, 0);
     addSwitch("--help", options.showHelp);
     addSwitch("--version", options.showVersion);
     addSwitch("--check", options.checkOnly);

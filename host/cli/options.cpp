@@ -351,6 +351,10 @@ Options parseOptions(int argc, const char* const* argv) {
             options.countWork = true;
         } else if (arg == "--storage-reads") {
             options.storageReads = true;
+        } else if (arg == "--max-storage-range") {
+            options.maxStorageRange = parseCount(arg, value(), 16, 4294967295u);
+        } else if (arg == "--max-allocation") {
+            options.maxAllocation = parseCount(arg, value(), 16, 4294967295u);
         } else if (arg == "--pixel") {
             options.pixel = parsePixel(arg, value());
             options.pixelGiven = true;

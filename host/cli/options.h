@@ -75,6 +75,10 @@ struct Options {
     bool generalKernel = false; // --general-kernel (hidden, for tools/kernel_costs)
     bool countWork = false;     // --count-work (hidden): --bench reports the hierarchy's work
     bool storageReads = false;  // --storage-reads (hidden): the kernel's fallback read path
+    // --max-storage-range and --max-allocation BYTES (hidden, for tests): the device's
+    // maxStorageBufferRange and maxMemoryAllocationSize lowered to these (gpu/limit_overrides.h).
+    std::uint32_t maxStorageRange = 0;
+    std::uint32_t maxAllocation = 0;
     // --compare FILE: the window at FILE's size compares the render with FILE (an image of the
     // scene made by another tracer): keys show the render, FILE or the difference, I prints
     // a pixel's diagnosis (docs/compare.md).

@@ -2,6 +2,7 @@
 
 #include "base/notes.h"
 #include "gpu/cpu_driver.h"
+#include "gpu/limit_overrides.h"
 #include "gpu/vk_check.h"
 
 #include <algorithm>
@@ -226,6 +227,19 @@ void createDevice(Context& context, const std::string& deviceRequest, VkSurfaceK
 
     context.physicalDevice = chosen.device;
     context.properties = chosen.properties;
+    VkPhysicalDeviceMaintenance3Properties maintenance3{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+    VkPhysicalDeviceProperties2 properties2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    properties2.pNext = &maintenance3;
+    vkGetPhysicalDeviceProperties2(chosen.device, &properties2);
+    context.maxMemoryAllocationSize = maintenance3.maxMemoryAllocationSize;
+    const LimitOverrides& lowered = limitOverrides();
+    std::uint32_t& storageRange = context.properties.limits.maxStorageBufferRange;
+    if (lowered.maxStorageBufferRange && lowered.maxStorageBufferRange < storageRange)
+        storageRange = static_cast<std::uint32_t>(lowered.maxStorageBufferRange);
+    if (lowered.maxMemoryAllocationSize &&
+        lowered.maxMemoryAllocationSize < context.maxMemoryAllocationSize)
+        context.maxMemoryAllocationSize = lowered.maxMemoryAllocationSize;
     context.queueFamily = chosen.queueFamily;
     vkGetPhysicalDeviceMemoryProperties(chosen.device, &context.memoryProperties);
     note("Device: %s (%s)\n", chosen.properties.deviceName,

@@ -20,6 +20,9 @@ struct Context {
     VkCommandPool commandPool = VK_NULL_HANDLE;
     bool timestampsSupported = false;
     bool float64Enabled = false; // shaderFloat64 on, for --precision fp64 (createDevice)
+    // The largest single allocation (VkPhysicalDeviceMaintenance3Properties): the scene is
+    // placed in as many buffers as this takes (scene_upload.h).
+    VkDeviceSize maxMemoryAllocationSize = 0;
 };
 
 // extensions: instance extensions the caller needs (GLFW's for a window).

@@ -63,51 +63,23 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
     const VkDeviceSize alignment =
         std::max({VkDeviceSize(fp64 ? 32 : 16), limits.minStorageBufferOffsetAlignment,
                   limits.minTexelBufferOffsetAlignment});
-    const VkDeviceSize maxRange = context.properties.limits.maxStorageBufferRange;
+    const VkDeviceSize maxRange = limits.maxStorageBufferRange;
+    const VkDeviceSize maxBuffer =
+        context.maxMemoryAllocationSize ? context.maxMemoryAllocationSize : ~VkDeviceSize(0);
+    const std::string device = std::string(" (") + context.properties.deviceName + ")";
+    VkDeviceSize bytesOf[BINDING_COUNT]{};
+    for (const ArrayView& array : arrays)
+        bytesOf[array.binding] = array.bytes;
 
-    // Lay the arrays out one after another. An empty array still needs a valid
-    // range to bind: all empty ones share one zeroed 16-byte slot at the start.
+    // Which arrays the kernel reads through their texel views: all it can (fp64's doubles
+    // stay on the storage path), unless one exceeds maxTexelBufferElements.
     GpuScene scene;
     OnFailure release([&] { destroyGpuScene(context, scene); });
-    VkDeviceSize size = alignment;
-    VkDeviceSize offsets[BINDING_COUNT]{};
-    for (const ArrayView& array : arrays) {
-        if (array.bytes > maxRange)
-            throw std::runtime_error(std::string("the scene's ") + kBindings[array.binding].name +
-                                     " take " + std::to_string(array.bytes) +
-                                     " bytes, more than this device's "
-                                     "maxStorageBufferRange of " +
-                                     std::to_string(maxRange) + " bytes (" +
-                                     context.properties.deviceName + ")");
-        offsets[array.binding] = array.bytes ? size : 0;
-        size = alignUp(size + array.bytes, alignment);
-    }
-    // Straight into the buffer's memory (or its staging copy): each array at its offset,
-    // zeros in the shared slot and in each array's padding up to the next, so every byte is
-    // written once (zeroing the whole buffer first wrote a large scene's twice).
-    scene.buffer = createFilledDeviceBuffer(
-        context, size,
-        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
-        [&](void* destination) {
-            auto* bytes = static_cast<std::uint8_t*>(destination);
-            std::memset(bytes, 0, alignment);
-            for (const ArrayView& array : arrays) {
-                if (!array.bytes) continue;
-                const VkDeviceSize end = offsets[array.binding] + array.bytes;
-                array.write(bytes + offsets[array.binding]);
-                std::memset(bytes + end, 0, alignUp(end, alignment) - end);
-            }
-        });
-    for (const ArrayView& array : arrays)
-        scene.ranges[array.binding] = {scene.buffer.buffer, offsets[array.binding],
-                                       array.bytes ? array.bytes : 16};
-
-    // fp64's doubles stay on the storage path: their views cover the zeroed slot.
     auto viewed = [&](const BindingInfo& view) { return !(fp64 && view.doublesInFp64); };
     scene.texelReads = wantTexelReads;
     for (const BindingInfo& view : kBindings) {
         if (view.role != BindingRole::SceneTexels) continue;
-        const VkDeviceSize texels = scene.ranges[view.source].range / view.texelBytes;
+        const VkDeviceSize texels = bytesOf[view.source] / view.texelBytes;
         if (scene.texelReads && viewed(view) && texels > limits.maxTexelBufferElements) {
             scene.texelReads = false;
             scene.storageReadsNote = std::string("Storage-buffer reads: the scene's ") +
@@ -118,19 +90,82 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
                                      std::to_string(limits.maxTexelBufferElements);
         }
     }
+    bool throughTexels[BINDING_COUNT]{};
+    for (const BindingInfo& view : kBindings)
+        if (view.role == BindingRole::SceneTexels && scene.texelReads && viewed(view))
+            throughTexels[view.source] = true;
+    // An array beyond maxStorageBufferRange is read through its texel view alone (which
+    // reaches maxTexelBufferElements texels); its storage binding sees the zeroed slot.
+    for (const ArrayView& array : arrays)
+        if (array.bytes > maxRange && !throughTexels[array.binding])
+            throw std::runtime_error(std::string("the scene's ") + kBindings[array.binding].name +
+                                     " take " + std::to_string(array.bytes) +
+                                     " bytes, more than this device's "
+                                     "maxStorageBufferRange of " +
+                                     std::to_string(maxRange) + " bytes" + device);
+
+    // Lay the arrays out one after another, in a new buffer where the next would take this
+    // one past maxMemoryAllocationSize. An empty array still needs a valid range to bind:
+    // all empty ones share the zeroed 16-byte slot at the start of each buffer.
+    struct Place {
+        std::size_t buffer = 0;
+        VkDeviceSize offset = 0; // 0: the zeroed slot (an empty array)
+    };
+    Place placed[BINDING_COUNT]{};
+    std::vector<VkDeviceSize> sizes{alignment};
+    for (const ArrayView& array : arrays) {
+        if (!array.bytes) continue;
+        if (alignment + array.bytes > maxBuffer)
+            throw std::runtime_error(std::string("the scene's ") + kBindings[array.binding].name +
+                                     " take " + std::to_string(array.bytes) +
+                                     " bytes, more than this device's maxMemoryAllocationSize "
+                                     "of " +
+                                     std::to_string(maxBuffer) + " bytes" + device);
+        if (sizes.back() + array.bytes > maxBuffer) sizes.push_back(alignment);
+        placed[array.binding] = {sizes.size() - 1, sizes.back()};
+        sizes.back() = alignUp(sizes.back() + array.bytes, alignment);
+    }
+    // Straight into each buffer's memory (or its staging copy): each array at its offset,
+    // zeros in the shared slot and in each array's padding up to the next, so every byte is
+    // written once (zeroing the whole buffer first wrote a large scene's twice).
+    for (std::size_t k = 0; k < sizes.size(); ++k)
+        scene.buffers.push_back(createFilledDeviceBuffer(
+            context, sizes[k],
+            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+            [&](void* destination) {
+                auto* bytes = static_cast<std::uint8_t*>(destination);
+                std::memset(bytes, 0, alignment);
+                for (const ArrayView& array : arrays) {
+                    const Place& place = placed[array.binding];
+                    if (!array.bytes || place.buffer != k) continue;
+                    const VkDeviceSize end = place.offset + array.bytes;
+                    array.write(bytes + place.offset);
+                    std::memset(bytes + end, 0, alignUp(end, alignment) - end);
+                }
+            }));
+    for (const ArrayView& array : arrays) {
+        const Place& place = placed[array.binding];
+        const bool bound = array.bytes && array.bytes <= maxRange;
+        scene.ranges[array.binding] = {scene.buffers[place.buffer].buffer, bound ? place.offset : 0,
+                                       bound ? array.bytes : 16};
+    }
+
+    // The views of arrays the kernel reads through storage bindings cover the zeroed slot.
     for (const BindingInfo& view : kBindings) {
         if (view.role != BindingRole::SceneTexels) continue;
+        const Place& place = placed[view.source];
+        const bool used = throughTexels[view.source] && bytesOf[view.source] > 0;
         VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
-        info.buffer = scene.buffer.buffer;
+        info.buffer = scene.buffers[place.buffer].buffer;
         info.format = view.format;
-        // The zeroed slot at offset 0 when the kernel reads the storage binding instead.
-        const bool used = scene.texelReads && viewed(view);
-        info.offset = used ? scene.ranges[view.source].offset : 0;
-        info.range = used ? scene.ranges[view.source].range : 16;
+        info.offset = used ? place.offset : 0;
+        info.range = used ? bytesOf[view.source] : 16;
         VK_CHECK(
             vkCreateBufferView(context.device, &info, nullptr, &scene.texelViews[view.binding]));
     }
-    scene.bytes = size;
+    scene.bytes = 0;
+    for (const VkDeviceSize size : sizes)
+        scene.bytes += size;
     for (const ArrayView& array : arrays)
         if (kBindings[array.binding].textureData) scene.textureBytes += array.bytes;
     scene.sphereCount = static_cast<std::uint32_t>(packed.spheres.size());
@@ -152,7 +187,7 @@ void updateGpuLights(const Context& context, GpuScene& scene,
     const VkDeviceSize bytes = lights.size() * sizeof(gpu::GpuLight);
     runOneTimeCommands(context, [&](VkCommandBuffer commands) {
         // A few lights: well under vkCmdUpdateBuffer's 65536 bytes, no staging buffer needed.
-        vkCmdUpdateBuffer(commands, scene.buffer.buffer, range.offset, bytes, lights.data());
+        vkCmdUpdateBuffer(commands, range.buffer, range.offset, bytes, lights.data());
         // The kernels of later submissions read them (storage or uniform texel buffer).
         VkMemoryBarrier written{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
         written.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
@@ -166,6 +201,7 @@ void updateGpuLights(const Context& context, GpuScene& scene,
 void destroyGpuScene(const Context& context, GpuScene& scene) {
     for (VkBufferView view : scene.texelViews)
         if (view) vkDestroyBufferView(context.device, view, nullptr);
-    destroyBuffer(context, scene.buffer);
+    for (Buffer& buffer : scene.buffers)
+        destroyBuffer(context, buffer);
     scene = GpuScene{};
 }

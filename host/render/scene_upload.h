@@ -1,14 +1,17 @@
-// The packed scene in one device buffer, each binding seeing its own range.
+// The packed scene in device buffers, each binding seeing its own range.
 #pragma once
 
 #include "gpu/resources.h"
 #include "packing/scene_packing.h"
 
 #include <string>
+#include <vector>
 
-// All scene arrays live in one device buffer; each binding sees its own range.
+// The scene's arrays, one after another in as few device buffers as the device's
+// maxMemoryAllocationSize allows (one for any but the largest scenes), each buffer starting
+// with a zeroed 16-byte slot that empty arrays bind; each binding sees its own range.
 struct GpuScene {
-    Buffer buffer;
+    std::vector<Buffer> buffers;
     VkDescriptorBufferInfo ranges[BINDING_COUNT]{}; // BINDING_OUTPUT_IMAGE's entry unused
     VkDeviceSize bytes = 0;                         // device memory holding the scene
     VkDeviceSize textureBytes = 0; // of which textures: texels, placements, texture coordinates
@@ -24,9 +27,10 @@ struct GpuScene {
     std::string storageReadsNote; // why not, when an array exceeds maxTexelBufferElements
 };
 
-// Throws with the limit's name when an array exceeds maxStorageBufferRange. With
-// wantTexelReads the arrays also get texel-buffer views (but fp64's doubles), unless one
-// exceeds maxTexelBufferElements (storageReadsNote).
+// With wantTexelReads the arrays also get texel-buffer views (but fp64's doubles), unless
+// one exceeds maxTexelBufferElements (storageReadsNote). An array beyond
+// maxStorageBufferRange is read through its view alone; throws with the limit's name and the
+// device's when one is not read so, or when one exceeds maxMemoryAllocationSize.
 GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wantTexelReads = true);
 
 // Writes new lights over the uploaded ones, as many as before (an OBJ model's rig placed
