@@ -2,6 +2,8 @@
 // do the same, operation for operation.
 #include "model/far_vertices.h"
 
+#include "base/parallel.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -20,10 +22,9 @@ std::vector<bool> farPositions(const std::vector<glm::dvec3>& positions) {
     const std::size_t count = positions.size(), middle = count / 2;
     std::vector<bool> far(count, false);
     if (count == 0) return far;
-    std::vector<double> values(count);
-    glm::dvec3 median(0.0);
-    double spread = 0.0;
-    for (int axis = 0; axis < 3; ++axis) {
+    glm::dvec3 median(0.0), spreads(0.0);
+    parallelFor(3, [&](std::size_t axis) { // the axes on threads of their own
+        std::vector<double> values(count);
         for (std::size_t i = 0; i < count; ++i)
             values[i] = positions[i][axis];
         std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(middle), values.end());
@@ -31,8 +32,9 @@ std::vector<bool> farPositions(const std::vector<glm::dvec3>& positions) {
         for (std::size_t i = 0; i < count; ++i)
             values[i] = std::abs(positions[i][axis] - median[axis]);
         std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(middle), values.end());
-        spread = std::max(spread, values[middle]);
-    }
+        spreads[axis] = values[middle];
+    });
+    const double spread = std::max({spreads.x, spreads.y, spreads.z});
     if (!(spread > 0.0)) return far;
     for (std::size_t i = 0; i < count; ++i) {
         const glm::dvec3 d = glm::abs(positions[i] - median);

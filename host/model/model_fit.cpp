@@ -2,9 +2,8 @@
 // that both place a model at the same bits.
 #include "model/model_fit.h"
 
-#include "base/parallel.h"
-
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -23,43 +22,73 @@ double distanceForShare(const std::vector<glm::dvec3>& turned, double tanY, doub
     return distance;
 }
 
-// The silhouette's extent in shares of the frame, over some of the positions.
-struct Silhouette {
-    double left = 0.0, right = 0.0, bottom = 0.0, top = 0.0;
-    bool behind = false; // a position not in front of the eye
-};
-
 // Half the larger of the silhouette's width and height as shares of the frame's, the model's
 // centre at distance straight ahead; infinite when a position is not in front of the eye.
-// Found on all threads: minima and maxima are the same in any order.
 double halfSpan(const std::vector<glm::dvec3>& turned, double tanY, double tanX, double distance) {
-    const std::vector<IndexRange> ranges = splitRange(turned.size(), 16384);
-    std::vector<Silhouette> parts(ranges.size());
-    parallelFor(ranges.size(), [&](std::size_t k) {
-        Silhouette& part = parts[k];
-        for (std::size_t i = ranges[k].begin; i < ranges[k].end; ++i) {
-            const glm::dvec3& v = turned[i];
-            const double depth = distance - v.z;
-            if (!(depth > 0.0)) {
-                part.behind = true;
-                return;
-            }
-            const double x = v.x / (depth * tanX), y = v.y / (depth * tanY);
-            part.left = std::min(part.left, x);
-            part.right = std::max(part.right, x);
-            part.bottom = std::min(part.bottom, y);
-            part.top = std::max(part.top, y);
-        }
-    });
-    Silhouette all;
-    for (const Silhouette& part : parts) {
-        if (part.behind) return std::numeric_limits<double>::infinity();
-        all.left = std::min(all.left, part.left);
-        all.right = std::max(all.right, part.right);
-        all.bottom = std::min(all.bottom, part.bottom);
-        all.top = std::max(all.top, part.top);
+    double left = 0.0, right = 0.0, bottom = 0.0, top = 0.0;
+    for (const glm::dvec3& v : turned) {
+        const double depth = distance - v.z;
+        if (!(depth > 0.0)) return std::numeric_limits<double>::infinity();
+        const double x = v.x / (depth * tanX), y = v.y / (depth * tanY);
+        left = std::min(left, x);
+        right = std::max(right, x);
+        bottom = std::min(bottom, y);
+        top = std::max(top, y);
     }
-    return std::max(all.right - all.left, all.top - all.bottom) / 2.0;
+    return std::max(right - left, top - bottom) / 2.0;
+}
+
+// The positions that can decide halfSpan at any distance, so that the bisection's forty
+// steps look at a few hundred positions rather than millions, to the same bits. A position
+// v with x > 0 cannot be the rightmost if another w has w.x >= v.x and w.z > v.z: w is
+// nearer the eye, so w.x / (depth * tanX) >= v.x / (depth * tanX) at every distance (each
+// rounding is monotone). Likewise leftwards, up and down. Positions are sorted into slices
+// of z; one whose slice is below a slice holding such a w is left out. The nearest position
+// stays too: it is the first to be behind the eye.
+std::vector<glm::dvec3> silhouetteCandidates(const std::vector<glm::dvec3>& turned) {
+    constexpr int kSlices = 4096;
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    std::size_t nearest = 0;
+    for (std::size_t i = 0; i < turned.size(); ++i) {
+        low = std::min(low, turned[i].z);
+        if (turned[i].z > high || i == 0) high = turned[i].z, nearest = i;
+    }
+    const double width = high - low, scale = width > 0.0 ? kSlices / width : 0.0;
+    auto sliceOf = [&](const glm::dvec3& v) { // monotone in z
+        const double slice = (v.z - low) * (std::isfinite(scale) ? scale : 0.0);
+        return slice < kSlices - 1 ? static_cast<int>(slice) : kSlices - 1;
+    };
+    // How far each position reaches right, left, up and down (0 where it does not).
+    auto reach = [](const glm::dvec3& v) {
+        return std::array<double, 4>{std::max(v.x, 0.0), std::max(-v.x, 0.0), std::max(v.y, 0.0),
+                                     std::max(-v.y, 0.0)};
+    };
+    // The farthest reach in each slice, then in the slices above each.
+    std::vector<std::array<double, 4>> above(kSlices + 1, {0.0, 0.0, 0.0, 0.0});
+    for (const glm::dvec3& v : turned) {
+        const std::array<double, 4> r = reach(v);
+        std::array<double, 4>& slice = above[sliceOf(v)];
+        for (int side = 0; side < 4; ++side)
+            slice[side] = std::max(slice[side], r[side]);
+    }
+    std::array<double, 4> beyond{-1.0, -1.0, -1.0, -1.0}; // nothing above the last slice
+    for (int slice = kSlices; slice-- > 0;) {
+        const std::array<double, 4> own = above[slice];
+        above[slice] = beyond;
+        for (int side = 0; side < 4; ++side)
+            beyond[side] = std::max(beyond[side], own[side]);
+    }
+    std::vector<glm::dvec3> candidates{turned[nearest]};
+    for (const glm::dvec3& v : turned) {
+        const std::array<double, 4> r = reach(v);
+        const std::array<double, 4>& higher = above[sliceOf(v)];
+        for (int side = 0; side < 4; ++side)
+            if (r[side] > 0.0 && r[side] > higher[side]) {
+                candidates.push_back(v);
+                break;
+            }
+    }
+    return candidates;
 }
 
 constexpr int kFitSteps = 40;
@@ -75,10 +104,11 @@ constexpr int kFitSteps = 40;
 double fitDistance(const std::vector<glm::dvec3>& turned, double tanY, double tanX) {
     double nearest = distanceForShare(turned, tanY, tanX, kFrameLimit);
     double farthest = distanceForShare(turned, tanY, tanX, kFrameShare); // spans <= the share
-    if (halfSpan(turned, tanY, tanX, nearest) <= kFrameShare) return nearest;
+    const std::vector<glm::dvec3> candidates = silhouetteCandidates(turned);
+    if (halfSpan(candidates, tanY, tanX, nearest) <= kFrameShare) return nearest;
     for (int step = 0; step < kFitSteps; ++step) {
         const double middle = (nearest + farthest) / 2.0;
-        if (halfSpan(turned, tanY, tanX, middle) > kFrameShare)
+        if (halfSpan(candidates, tanY, tanX, middle) > kFrameShare)
             nearest = middle;
         else
             farthest = middle;
