@@ -5,7 +5,7 @@ SCENE ?= scenes/showcase.scene
 SANITIZE_DIR ?= build-sanitize
 FUZZ_SECONDS ?= 60
 
-.PHONY: all build deps bench-deps configure run test check-hardening bench bench-kernel clean
+.PHONY: all build deps bench-deps configure run test check-hardening bench bench-kernel bench-scale clean
 
 all: build
 
@@ -60,6 +60,14 @@ bench: bench-deps build
 # KERNEL_BENCH_ARGS="--rounds 12" for finer figures.
 bench-kernel: build
 	@VK_ICD_FILENAMES=$${VK_ICD_FILENAMES:-} tools/kernel_costs $(BUILD_DIR)/Raytracer $(KERNEL_BENCH_ARGS)
+
+# From file to first frame at scale: torus knots of 1M, 4M, 10M and 30M triangles as OBJ,
+# each with its start-up by phase, parse MB/s on 1 and all threads, peak memory, GPU bytes
+# per triangle, frame time and Embree's build beside the hierarchy's (tools/bench_scale;
+# SCALE_ARGS="--sizes 1e6 4e6" on a smaller machine). Tables on stdout, CSV under
+# $(BUILD_DIR)/bench-scale/.
+bench-scale: bench-deps build
+	@VK_ICD_FILENAMES=$${VK_ICD_FILENAMES:-} tools/bench_scale $(BUILD_DIR)/Raytracer $(SCALE_ARGS)
 
 bench-deps:
 	@tools/build/install_deps.sh --bench

@@ -3,6 +3,7 @@
 #include "base/notes.h"
 #include "base/output_format.h"
 #include "base/parallel.h"
+#include "base/phase_progress.h"
 #include "base/scope_guard.h"
 #include "batch.h"
 #include "bench.h"
@@ -119,6 +120,11 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
     StartupTimes startup{processStart, 0.0};
     Options options = parseOptions(argc, argv);
     setQuiet(options.quiet);
+    // The start-up's phases report as renders do; a benchmark's stderr stays quiet.
+    setPhaseProgressMode(options.benchFrames > 0 || options.benchWindowFrames > 0
+                             ? ProgressMode::Off
+                         : options.progress ? ProgressMode::Always
+                                            : ProgressMode::Auto);
     requestCpuDriverThreads(options.cpuThreads); // before any Vulkan call reads it
     setLimitOverrides({options.maxStorageRange, options.maxAllocation});
     setWorkerThreads(options.cpuThreads); // the host's own threads, the same count

@@ -218,6 +218,9 @@ def parse_args(argv):
     ap.add_argument("--shininess", type=float, default=40.0)
     ap.add_argument("--texture", metavar="IMAGE.png",
                     help="OBJ of a torus or knot: texture coordinates and a checkerboard map_Kd written there")
+    ap.add_argument("--no-normals", action="store_true",
+                    help="OBJ: no vn lines, faces of positions alone (with --color solid, the "
+                         "positions-and-faces file of a scan)")
     ap.add_argument("--bare", action="store_true",
                     help="only the mesh and two lights: no ground, no extra spheres")
     a = ap.parse_args(argv)
@@ -229,6 +232,8 @@ def parse_args(argv):
         ap.error("--specular must be within [0, 1]")
     if not a.shininess >= 0.0:
         ap.error("--shininess must not be negative")
+    if a.no_normals and (a.texture or not a.out.lower().endswith(".obj")):
+        ap.error("--no-normals is for an OBJ without --texture")
     if a.texture and (a.shape == "sphere" or not a.out.lower().endswith(".obj")):
         ap.error("--texture needs a torus or knot written as OBJ")
     return a
@@ -269,7 +274,8 @@ def write_texture(obj_path, image_path):
 
 
 def write_obj(path, positions, normals, colors, triangles, texcoords=None):
-    """The mesh as OBJ: one v (with its colour, if any) and one vn per vertex, one f each;
+    """The mesh as OBJ: one v (with its colour, if any) and one vn per vertex (none when
+    normals is empty: the reader makes them), one f each;
     with texcoords (grid_texcoords' vt lines and indices), f's corners are v/vt/vn and the
     header names the material (write_texture's lines)."""
     with open(path, "w", newline="\n") as out:
@@ -290,8 +296,10 @@ def write_obj(path, positions, normals, colors, triangles, texcoords=None):
                 ti, tj, tk = texcoords[1][t]
                 chunk.append("f %d/%d/%d %d/%d/%d %d/%d/%d\n" % (i + 1, ti + 1, i + 1, j + 1, tj + 1, j + 1,
                                                                k + 1, tk + 1, k + 1))
-            else:
+            elif normals:
                 chunk.append("f %d//%d %d//%d %d//%d\n" % (i + 1, i + 1, j + 1, j + 1, k + 1, k + 1))
+            else:
+                chunk.append("f %d %d %d\n" % (i + 1, j + 1, k + 1))
             if len(chunk) >= 40000:
                 out.writelines(chunk)
                 chunk = []
@@ -362,7 +370,7 @@ def main(argv):
         texcoords = None
         if a.texture:
             texcoords = (*grid_texcoords(tris, grid), write_texture(a.out, a.texture))
-        return write_obj(a.out, [place(p) for p in pos], [rot(n) for n in nor],
+        return write_obj(a.out, [place(p) for p in pos], [] if a.no_normals else [rot(n) for n in nor],
                          [ramp(t) for t in par] if a.color == "ramp" else None, tris, texcoords)
 
     count = len(lights) + len(extras) + len(tris)

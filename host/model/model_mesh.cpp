@@ -80,7 +80,7 @@ std::vector<TriangleFate> triangleFates(const SourceModel& model,
 Mesh modelMesh(const SourceModel& model, const std::vector<glm::dvec3>& positions,
                const std::vector<glm::dvec3>& normals, const std::vector<TriangleFate>& fates,
                double creaseDegrees, const std::vector<bool>& farFaces,
-               const VertexPlacement& placement) {
+               const VertexPlacement& placement, PhaseProgress* progress) {
     const std::size_t triangles = model.triangles.size();
     std::size_t kept = 0;
     bool anyUnnormaled = false; // a kept corner without a normal: the smooth ones are made
@@ -128,6 +128,7 @@ Mesh modelMesh(const SourceModel& model, const std::vector<glm::dvec3>& position
             mesh.triangleMaterials.push_back(source.material);
             mesh.triangleLines.push_back(source.line);
         }
+        if (progress) progress->advance(count);
     }
 
     // Each vertex's attributes, from its key.

@@ -4,6 +4,7 @@
 // smooth_normals.h's. Shared among the host's threads where the order cannot change a bit.
 #pragma once
 
+#include "base/phase_progress.h"
 #include "model/source_model.h"
 #include "scene/mesh.h"
 
@@ -34,4 +35,4 @@ struct VertexPlacement {
 Mesh modelMesh(const SourceModel& model, const std::vector<glm::dvec3>& positions,
                const std::vector<glm::dvec3>& normals, const std::vector<TriangleFate>& fates,
                double creaseDegrees, const std::vector<bool>& farFaces,
-               const VertexPlacement& placement);
+               const VertexPlacement& placement, PhaseProgress* progress = nullptr);

@@ -4,6 +4,7 @@
 #include "model/model_scene.h"
 
 #include "base/parallel.h"
+#include "base/phase_progress.h"
 #include "model/exact_vectors.h"
 #include "model/far_vertices.h"
 #include "model/model_fit.h"
@@ -246,6 +247,8 @@ std::optional<std::string> lyingDown(const ModelPlacement& model) {
 
 Scene sceneFromModel(const SourceModel& model, const ModelSceneSetup& setup,
                      const std::string& fileName) {
+    // The mesh's vertices take most of the time: its triangles are the units.
+    PhaseProgress progress("Making a mesh of " + fileName, model.triangles.size());
     std::vector<glm::dvec3> positions(model.positions.size()), normals(model.normals.size());
     auto up = [&](const glm::dvec3& v) { return turnUp(v, setup.up); };
     std::transform(model.positions.begin(), model.positions.end(), positions.begin(), up);
@@ -284,7 +287,8 @@ Scene sceneFromModel(const SourceModel& model, const ModelSceneSetup& setup,
     scene.warnings = model.warnings;
     Mesh mesh = modelMesh(model, positions, normals, fates, setup.creaseDegrees, farFaces,
                           {[&](const glm::dvec3& p) { return placement.place(p); },
-                           [&](const glm::dvec3& n) { return placement.turn.apply(n); }});
+                           [&](const glm::dvec3& n) { return placement.turn.apply(n); }},
+                          &progress);
     mesh.materials = model.materials;
     const auto farTriangles =
         static_cast<std::size_t>(std::count(fates.begin(), fates.end(), TriangleFate::far));

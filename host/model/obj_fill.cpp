@@ -243,17 +243,22 @@ class ChunkReader {
 
 ObjChunkResult fillObjChunk(std::string_view chunk, const std::string& fileName,
                             const ObjChunkPlace& place, const ObjChunkPlace& end,
-                            const ObjChunkMaterials& materials, SourceModel& model) {
+                            const ObjChunkMaterials& materials, SourceModel& model,
+                            PhaseProgress* progress) {
     ObjChunkResult result;
     ChunkReader reader(fileName, place, end, materials, model, result);
     LineWalker lines(chunk, place.firstLine);
     LogicalLine logical;
+    ProgressShare share(progress, lines);
     try {
-        while (lines.next(logical))
+        while (lines.next(logical)) {
+            share.update();
             reader.read(logical);
+        }
     } catch (const SceneError& error) {
         result.error = error;
     }
+    share.finish();
     return result;
 }
 

@@ -5,6 +5,7 @@
 // may be positions of a chunk still being read.
 #pragma once
 
+#include "base/phase_progress.h"
 #include "model/source_model.h"
 #include "scene/scene_error.h"
 
@@ -47,7 +48,8 @@ struct ObjChunkMaterials {
 // end; mtllib and the ignored statements are left to the reader's replay of them.
 ObjChunkResult fillObjChunk(std::string_view chunk, const std::string& fileName,
                             const ObjChunkPlace& place, const ObjChunkPlace& end,
-                            const ObjChunkMaterials& materials, SourceModel& model);
+                            const ObjChunkMaterials& materials, SourceModel& model,
+                            PhaseProgress* progress = nullptr);
 
 // Splits the chunk's polygons into their triangles in model; the number split as fans
 // although concave (polygon_triangulation.h), and the line of the first of them.

@@ -9,6 +9,7 @@
 #include "model/obj_reader.h"
 
 #include "base/parallel.h"
+#include "base/populated_memory.h"
 #include "model/model_paths.h"
 #include "model/obj_fill.h"
 #include "model/obj_survey.h"
@@ -90,16 +91,17 @@ MaterialReplay replayMaterials(const std::vector<ObjChunkSurvey>& surveys,
     return replay;
 }
 
-// Every array step 3 writes, at the sizes the surveys add up to.
+// Every array step 3 writes, at the sizes the surveys add up to, their pages mapped on all
+// threads.
 void sizeArrays(SourceModel& model, const ObjChunkPlace& total) {
-    model.positions.resize(total.positions);
-    model.positionLines.resize(total.positions);
-    model.colors.resize(total.positions);
-    model.normals.resize(total.normals);
-    model.texcoords.resize(total.texcoords);
-    model.facePositions.resize(total.facePositions);
-    model.faceStarts.resize(total.faces + 1);
-    model.triangles.resize(total.triangles);
+    resizePopulated(model.positions, total.positions);
+    resizePopulated(model.positionLines, total.positions);
+    resizePopulated(model.colors, total.positions);
+    resizePopulated(model.normals, total.normals);
+    resizePopulated(model.texcoords, total.texcoords);
+    resizePopulated(model.facePositions, total.facePositions);
+    resizePopulated(model.faceStarts, total.faces + 1);
+    resizePopulated(model.triangles, total.triangles);
 }
 
 ObjChunkPlace operator+(ObjChunkPlace place, const ObjChunkSurvey& survey) {
@@ -137,9 +139,10 @@ SourceModel parseObj(std::string_view text, const std::string& fileName, const M
         return text.substr(starts[k], (k + 1 < chunks ? starts[k + 1] : text.size()) - starts[k]);
     };
 
+    PhaseProgress progress("Reading " + fileName, 2 * text.size()); // surveyed, then read
     std::vector<ObjChunkSurvey> surveys(chunks);
     parallelFor(
-        chunks, [&](std::size_t k) { surveys[k] = surveyObjChunk(chunkText(k)); }, 0);
+        chunks, [&](std::size_t k) { surveys[k] = surveyObjChunk(chunkText(k), &progress); }, 0);
     std::vector<ObjChunkPlace> places{ObjChunkPlace{}};
     for (const ObjChunkSurvey& survey : surveys)
         places.push_back(places.back() + survey);
@@ -155,7 +158,7 @@ SourceModel parseObj(std::string_view text, const std::string& fileName, const M
         chunks,
         [&](std::size_t k) {
             read[k] = fillObjChunk(chunkText(k), fileName, places[k], places[k + 1],
-                                   replay.chunks[k], model);
+                                   replay.chunks[k], model, &progress);
         },
         0);
     for (const ObjChunkResult& chunk : read)

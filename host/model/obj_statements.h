@@ -3,6 +3,7 @@
 // any '#', and the numbers a statement gives, each wrong one a SceneError at its line.
 #pragma once
 
+#include "base/phase_progress.h"
 #include "scene/scene_error.h"
 
 #include <glm/glm.hpp>
@@ -28,8 +29,9 @@ class LineWalker {
     // The next logical line, or false at the end of the text. The view lives until the
     // next call.
     bool next(LogicalLine& out);
-    // Physical lines read so far.
+    // Physical lines read so far, and the text's bytes.
     int linesRead() const { return line_ - firstLine_ + 1; }
+    std::size_t bytesRead() const { return pos_; }
 
   private:
     std::string_view text_;
@@ -37,6 +39,28 @@ class LineWalker {
     std::size_t nextCr_ = 0; // the first '\r' at or after pos_, or the text's size
     int firstLine_, line_;
     std::string joined_; // a continued line, put together
+};
+
+// A chunk's reading as a share of a phase's progress: its bytes, told every few lines.
+class ProgressShare {
+  public:
+    ProgressShare(PhaseProgress* progress, const LineWalker& lines)
+        : progress_(progress), lines_(lines) {}
+    void update() {
+        if (progress_ && ++lines_since_ == kLines) finish(), lines_since_ = 0;
+    }
+    void finish() {
+        if (!progress_) return;
+        progress_->advance(lines_.bytesRead() - told_);
+        told_ = lines_.bytesRead();
+    }
+
+  private:
+    static constexpr int kLines = 1 << 16;
+    PhaseProgress* progress_;
+    const LineWalker& lines_;
+    std::size_t told_ = 0;
+    int lines_since_ = 0;
 };
 
 // One statement: its first line and its words before any '#'.

@@ -66,13 +66,15 @@ std::vector<std::size_t> objChunkStarts(std::string_view text, unsigned threads,
     return starts;
 }
 
-ObjChunkSurvey surveyObjChunk(std::string_view chunk) {
+ObjChunkSurvey surveyObjChunk(std::string_view chunk, PhaseProgress* progress) {
     ObjChunkSurvey survey;
     LineWalker lines(chunk);
     LogicalLine logical;
     Statement statement;
     std::set<std::string, std::less<>> ignored;
+    ProgressShare share(progress, lines);
     while (lines.next(logical)) {
+        share.update();
         const std::string_view text = logical.text;
         // The common statements by their first characters, without splitting them.
         if (text.size() >= 2 && isSpace(text[1]) && (text[0] == 'v' || text[0] == 'f')) {
@@ -122,6 +124,7 @@ ObjChunkSurvey surveyObjChunk(std::string_view chunk) {
         }
         }
     }
+    share.finish();
     survey.lines = lines.linesRead();
     return survey;
 }

@@ -6,6 +6,8 @@
 // file order. The counts are exact for a chunk the second pass reads without an error.
 #pragma once
 
+#include "base/phase_progress.h"
+
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -36,4 +38,5 @@ struct ObjChunkSurvey {
 std::vector<std::size_t> objChunkStarts(std::string_view text, unsigned threads,
                                         std::size_t minChunkBytes);
 
-ObjChunkSurvey surveyObjChunk(std::string_view chunk);
+// progress (none: nullptr) is advanced by the chunk's bytes as they are read.
+ObjChunkSurvey surveyObjChunk(std::string_view chunk, PhaseProgress* progress = nullptr);

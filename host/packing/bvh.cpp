@@ -18,6 +18,7 @@
 #include "packing/bvh.h"
 
 #include "base/parallel.h"
+#include "base/phase_progress.h"
 
 #include <algorithm>
 #include <array>
@@ -80,7 +81,8 @@ struct Subtree {
 class Builder {
   public:
     Builder(const PrimitiveBounds& input, const BvhSettings& settings)
-        : boxes_(input.boxes.data()), sphereCount_(input.sphereCount), settings_(settings),
+        : progress("Building the hierarchy", input.size()), boxes_(input.boxes.data()),
+          sphereCount_(input.sphereCount), settings_(settings),
           threads_(settings.threads ? settings.threads : workerThreads()),
           centroids_(input.size() * 3) {
         order.resize(input.size());
@@ -149,6 +151,7 @@ class Builder {
     }
 
     std::vector<std::uint32_t> order; // primitive ids; each leaf owns a consecutive range
+    PhaseProgress progress;           // the primitives in leaves so far
 
   private:
     Box box(std::uint32_t id) const {
@@ -249,6 +252,7 @@ class Builder {
     // A leaf over range; a range holding both kinds becomes an interior node over a sphere
     // leaf and a triangle leaf, since a leaf indexes one array.
     Subtree makeLeaf(const Range& range, std::uint32_t depth, std::vector<gpu::GpuBvhNode>& out) {
+        progress.advance(range.size());
         auto first = order.begin() + range.begin, last = order.begin() + range.end;
         auto isSphere = [&](std::uint32_t id) { return id < sphereCount_; };
         auto middle = std::partition(first, last, isSphere);

@@ -1,6 +1,7 @@
 #include "packing/scene_packing.h"
 
 #include "base/deduplicator.h"
+#include "base/phase_progress.h"
 #include "base/startup_phases.h"
 #include "packing/flat_patches.h"
 #include "scene/scene_triangles.h"
@@ -153,9 +154,12 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
         std::uint32_t vertex = 0, corner = 0;
     };
     std::vector<PackedCorner> packedCorners;
+    PhaseProgress progress("Packing the scene", triangles);
+    progress.advance(scene.triangles.size());
     for (const Mesh& mesh : scene.meshes) {
         packedCorners.assign(mesh.positions.size(), PackedCorner{});
         for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+            if (t % 65536 == 65535) progress.advance(65536);
             glm::uvec4 packedTriangle(0u);
             const auto texture = triangleTexture(mesh, t);
             for (int k = 0; k < 3; ++k) {

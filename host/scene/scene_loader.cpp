@@ -10,6 +10,7 @@
 #include "scene/scene_loader.h"
 
 #include "base/parallel.h"
+#include "base/populated_memory.h"
 #include "scene/file_format.h"
 #include "scene/mapped_file.h"
 #include "scene/scene_lexer.h"
@@ -20,7 +21,6 @@
 #include <cstring>
 #include <optional>
 #include <stop_token>
-#include <sys/mman.h>
 #include <system_error>
 
 using scene_lexer::Tokenizer;
@@ -30,19 +30,14 @@ using scene_parser::Warning;
 
 namespace {
 
-// Makes room for exactly `capacity` elements, the new block's pages mapped in one call
-// before they are written (MADV_POPULATE_WRITE, Linux 5.14; only advice, ignored where
-// unknown): a million triangles take 300 MiB, and taking that as 75,000 page faults
-// costs a tenth of a second more.
+// Makes room for exactly `capacity` elements, the new block's pages mapped before they are
+// written (base/populated_memory.h): a million triangles take 300 MiB, and taking that as
+// 75,000 page faults costs a tenth of a second more.
 template <typename T> void reserveExactly(std::vector<T>& values, std::size_t capacity) {
     if (capacity <= values.capacity()) return;
     std::vector<T> larger;
     larger.reserve(capacity);
-    constexpr std::uintptr_t page = 4096;
-    const auto address = reinterpret_cast<std::uintptr_t>(larger.data());
-    const std::uintptr_t begin = (address + page - 1) / page * page;
-    const std::uintptr_t end = (address + capacity * sizeof(T)) / page * page;
-    if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_POPULATE_WRITE);
+    populatePages(larger.data(), capacity * sizeof(T));
     larger.insert(larger.end(), values.begin(), values.end());
     values.swap(larger);
 }

@@ -292,4 +292,32 @@ TEST(Progress, PlainLinesWhenStderrIsNotATerminal) {
     EXPECT_EQ(shortRun.err.find("Rendered "), std::string::npos) << shortRun.err;
 }
 
+// The start-up's phases report as renders do: with --progress each says when it is done
+// (and, past a tenth of a second, how far it is); a benchmark and --quiet say nothing.
+TEST(Progress, TheStartUpsPhasesSayWhenTheyAreDone) {
+    const std::filesystem::path dir = freshOutputDir("cli-output/phase-progress");
+    const std::filesystem::path model = dir / "m.obj";
+    writeTextFile(model, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
+    const std::vector<std::string> args = {
+        model.string(), "-o", (dir / "out.png").string(), "--width", "16", "--height", "12"};
+    std::vector<std::string> asked = args;
+    asked.push_back("--progress");
+    const ProcessResult run = runRaytracer(asked);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    for (const std::string& phase :
+         {"Reading " + model.string(), "Making a mesh of " + model.string(),
+          std::string("Packing the scene"), std::string("Building the hierarchy")})
+        EXPECT_EQ(linesStartingWith(run.err, phase + ": done in ").size(), 1u)
+            << phase << " in " << run.err;
+    std::vector<std::string> bench = asked;
+    bench.insert(bench.end(), {"--bench", "1"});
+    std::vector<std::string> quiet = asked;
+    quiet.push_back("--quiet");
+    for (const auto& silent : {bench, quiet}) {
+        const ProcessResult other = runRaytracer(silent);
+        ASSERT_EQ(other.exitCode, 0) << other.err;
+        EXPECT_EQ(other.err.find("done in"), std::string::npos) << other.err;
+    }
+}
+
 } // namespace
