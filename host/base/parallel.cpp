@@ -83,6 +83,12 @@ void parallelForPerThread(std::size_t count, const std::function<IndexBody()>& m
     if (error) std::rethrow_exception(error);
 }
 
+std::size_t chunkCount(std::size_t bytes, unsigned threads, std::size_t minChunkBytes) {
+    if (threads == 0) threads = workerThreads();
+    return std::max<std::size_t>(
+        1, std::min<std::size_t>(threads, bytes / std::max<std::size_t>(minChunkBytes, 1)));
+}
+
 std::vector<IndexRange> splitRange(std::size_t count, std::size_t grain) {
     const std::size_t most = std::max<std::size_t>(1, 4 * std::size_t(workerThreads()));
     const std::size_t ranges =

@@ -29,6 +29,10 @@ using IndexBody = std::function<void(std::size_t)>;
 void parallelForPerThread(std::size_t count, const std::function<IndexBody()>& makeBody,
                           unsigned threads = 0);
 
+// How many readers share a text of `bytes`: up to `threads` (0: workerThreads()), none with
+// less than minChunkBytes, at least one.
+std::size_t chunkCount(std::size_t bytes, unsigned threads, std::size_t minChunkBytes);
+
 // [0, count) cut into consecutive ranges, a few per thread and none shorter than `grain`
 // (but the last): how a loop over a large array is shared (parallelFor over the ranges), and,
 // for a reduction that must give the bits of one pass, the order its parts are combined in.

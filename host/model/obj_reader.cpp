@@ -1,6 +1,6 @@
 // An OBJ file in four steps (obj_reader.h), the first and the third on all threads, one
 // chunk of the text each (objChunkStarts):
-//   1. each chunk's survey: how many of each thing it makes, and its mtllib and usemtl;
+//   1. each chunk's survey: is it text, how many of each thing it makes, its mtllib and usemtl;
 //   2. the model's arrays sized to the sums, and the material statements replayed in file
 //      order: the libraries read, each usemtl's material known, their warnings said;
 //   3. each chunk read into its place in the arrays (obj_fill.h);
@@ -20,6 +20,7 @@
 
 #include <exception>
 #include <map>
+#include <optional>
 #include <set>
 
 namespace {
@@ -129,9 +130,8 @@ SourceModel parseObj(std::string_view text, const std::string& fileName, const M
     if (const auto format = otherFileFormat(text))
         throw SceneError(fileName, 0,
                          otherFormatMessage(*format, fileName, ExpectedFile::SourceModel));
-    if (const auto reason = scene_lexer::binaryReason(text, scene_lexer::TextEncoding::AnyBytes))
-        throw SceneError(fileName, 0, "not an OBJ file: it is binary (" + *reason + ")");
-    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3); // UTF-8 byte-order mark
+    const std::size_t bom = text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0; // UTF-8 byte-order mark
+    text.remove_prefix(bom);
     const std::vector<std::size_t> starts =
         objChunkStarts(text, options.threads, options.minChunkBytes);
     const std::size_t chunks = starts.size();
@@ -139,10 +139,22 @@ SourceModel parseObj(std::string_view text, const std::string& fileName, const M
         return text.substr(starts[k], (k + 1 < chunks ? starts[k + 1] : text.size()) - starts[k]);
     };
 
+    // Each chunk is checked for binary bytes (its offsets made the file's), then surveyed;
+    // the first binary chunk's report is the file's.
     PhaseProgress progress("Reading " + fileName, 2 * text.size()); // surveyed, then read
     std::vector<ObjChunkSurvey> surveys(chunks);
+    std::vector<std::optional<std::string>> binary(chunks);
     parallelFor(
-        chunks, [&](std::size_t k) { surveys[k] = surveyObjChunk(chunkText(k), &progress); }, 0);
+        chunks,
+        [&](std::size_t k) {
+            binary[k] = scene_lexer::binaryReason(chunkText(k), scene_lexer::TextEncoding::AnyBytes,
+                                                  bom + starts[k]);
+            if (!binary[k]) surveys[k] = surveyObjChunk(chunkText(k), &progress);
+        },
+        0);
+    for (const std::optional<std::string>& reason : binary)
+        if (reason)
+            throw SceneError(fileName, 0, "not an OBJ file: it is binary (" + *reason + ")");
     std::vector<ObjChunkPlace> places{ObjChunkPlace{}};
     for (const ObjChunkSurvey& survey : surveys)
         places.push_back(places.back() + survey);

@@ -47,9 +47,7 @@ ObjKeyword objKeyword(std::string_view keyword) {
 
 std::vector<std::size_t> objChunkStarts(std::string_view text, unsigned threads,
                                         std::size_t minChunkBytes) {
-    if (threads == 0) threads = workerThreads();
-    const std::size_t chunks =
-        std::min<std::size_t>(threads, text.size() / std::max<std::size_t>(minChunkBytes, 1));
+    const std::size_t chunks = chunkCount(text.size(), threads, minChunkBytes);
     std::vector<std::size_t> starts{0};
     for (std::size_t k = 1; k < chunks; ++k) {
         std::size_t from = std::max(text.size() * k / chunks, starts.back());

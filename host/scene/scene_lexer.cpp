@@ -152,7 +152,8 @@ const char* scanSimpleDecimal(const char* p, const char* const end, double& valu
 
 } // namespace
 
-std::optional<std::string> binaryReason(std::string_view text, TextEncoding encoding) {
+std::optional<std::string> binaryReason(std::string_view text, TextEncoding encoding,
+                                        std::size_t offset) {
     static const char hex[] = "0123456789abcdef";
     const std::size_t size = text.size();
     for (std::size_t i = 0; i < size;) {
@@ -169,16 +170,16 @@ std::optional<std::string> binaryReason(std::string_view text, TextEncoding enco
         if ((c >= 0x20 && c < 0x7F) || isSpace(text[i])) {
             ++i;
         } else if (c == 0) {
-            return "NUL byte at offset " + std::to_string(i);
+            return "NUL byte at offset " + std::to_string(offset + i);
         } else if (c < 0x80) {
             return std::string("control byte 0x") + hex[c >> 4] + hex[c & 15] + " at offset " +
-                   std::to_string(i);
+                   std::to_string(offset + i);
         } else if (encoding == TextEncoding::AnyBytes) {
             ++i;
         } else if (std::size_t length = utf8SequenceLength(text, i)) {
             i += length;
         } else {
-            return "invalid UTF-8 at offset " + std::to_string(i);
+            return "invalid UTF-8 at offset " + std::to_string(offset + i);
         }
     }
     return std::nullopt;
@@ -218,9 +219,7 @@ std::size_t objectKeywordBetween(std::string_view text, std::size_t from, std::s
 
 std::vector<std::size_t> chunkStarts(std::string_view text, unsigned threads,
                                      std::size_t minChunkBytes) {
-    if (threads == 0) threads = workerThreads();
-    const std::size_t chunks =
-        std::min<std::size_t>(threads, text.size() / std::max<std::size_t>(minChunkBytes, 1));
+    const std::size_t chunks = chunkCount(text.size(), threads, minChunkBytes);
     std::vector<std::size_t> starts{0};
     for (std::size_t k = 1; k < chunks; ++k) {
         const std::size_t share = text.size() * k / chunks, next = text.size() * (k + 1) / chunks;

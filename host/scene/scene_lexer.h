@@ -33,12 +33,14 @@ inline bool isSpace(char c) {
 }
 
 // Why the text is not a text file at all, or nothing: a NUL, a control byte other
-// than whitespace, or (with requireUtf8) bytes that are not UTF-8. Reports the first
-// offending offset. OBJ files pass requireUtf8 false: their names and comments come in
-// whatever encoding the exporter used (a Latin-1 material name), compared as bytes.
+// than whitespace, or (with Utf8) bytes that are not UTF-8. Reports the first
+// offending offset, counted from `offset` (the text's place in its file, for a part of it
+// checked apart). OBJ files pass AnyBytes: their names and comments come in whatever
+// encoding the exporter used (a Latin-1 material name), compared as bytes.
 enum class TextEncoding { Utf8, AnyBytes };
 std::optional<std::string> binaryReason(std::string_view text,
-                                        TextEncoding encoding = TextEncoding::Utf8);
+                                        TextEncoding encoding = TextEncoding::Utf8,
+                                        std::size_t offset = 0);
 
 // One whitespace-separated word of the text and the line it is on.
 struct Token {
