@@ -15,12 +15,7 @@ ImageLimits imageLimitsOf(const Context& context) {
     ImageLimits limits;
     limits.deviceName = context.properties.deviceName;
     limits.maxImageDimension2D = context.properties.limits.maxImageDimension2D;
-    VkPhysicalDeviceMaintenance3Properties maintenance3{
-        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
-    VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
-    properties.pNext = &maintenance3;
-    vkGetPhysicalDeviceProperties2(context.physicalDevice, &properties);
-    limits.maxMemoryAllocationSize = maintenance3.maxMemoryAllocationSize;
+    limits.maxMemoryAllocationSize = context.maxMemoryAllocationSize;
     const VkPhysicalDeviceMemoryProperties& memory = context.memoryProperties;
     for (std::uint32_t h = 0; h < memory.memoryHeapCount; ++h)
         if (memory.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -117,12 +118,21 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
     // The scene file's triangles, then each mesh's (scene_triangles.h's numbering). A closed
     // mesh has about half as many vertices as triangles.
     const std::size_t triangles = triangleCount(scene);
+    // As many vertices as the scene can make when no vertex has two materials: each mesh's,
+    // and three for each of the scene file's triangles. Reserved (address space: a page
+    // costs only once written), so that the arrays are not copied as they grow.
+    std::size_t vertexBound = 3 * scene.triangles.size();
+    for (const Mesh& mesh : scene.meshes)
+        vertexBound += mesh.positions.size();
     std::vector<PackedVertex> vertices;
-    Deduplicator<PackedVertex> vertexIndices(vertices, triangles / 2);
+    vertices.reserve(vertexBound);
     // The corners by position alone, whatever their normals and materials: what the flat
     // patches join triangles through.
     std::vector<glm::dvec4> corners;
-    Deduplicator<glm::dvec4> cornerIndices(corners, triangles / 2);
+    corners.reserve(vertexBound);
+    // The look-up tables live only while the triangles are packed.
+    auto vertexIndices = std::make_unique<Deduplicator<PackedVertex>>(vertices, triangles / 2);
+    auto cornerIndices = std::make_unique<Deduplicator<glm::dvec4>>(corners, triangles / 2);
     std::vector<std::uint32_t> cornersOfTriangles;
     cornersOfTriangles.reserve(3 * triangles);
     packed.triangles.reserve(triangles);
@@ -136,8 +146,8 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
         if (fp64) packedVertex.exactPosition = glm::dvec4(position, 0.0);
         // The position the GPU computes with: rounded to float in fp32.
         const glm::dvec3 corner = fp64 ? position : glm::dvec3(glm::vec3(position));
-        cornersOfTriangles.push_back(cornerIndices.indexOf(glm::dvec4(corner, 0.0)));
-        return vertexIndices.indexOf(packedVertex);
+        cornersOfTriangles.push_back(cornerIndices->indexOf(glm::dvec4(corner, 0.0)));
+        return vertexIndices->indexOf(packedVertex);
     };
     for (const Triangle& triangle : scene.triangles) {
         glm::uvec4 packedTriangle(0u);
@@ -179,8 +189,14 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
             packed.triangles.push_back(packedTriangle);
         }
     }
+    vertexIndices.reset();
+    cornerIndices.reset();
+    packedCorners = {};
     std::vector<glm::dvec3> cornerPositions(corners.begin(), corners.end());
+    corners = {};
     const std::vector<std::uint32_t> patches = flatPatches(cornerPositions, cornersOfTriangles);
+    cornerPositions = {};
+    cornersOfTriangles = {};
     for (std::size_t t = 0; t < packed.triangles.size(); ++t)
         packed.triangles[t].w = patches[t];
     packed.vertexPositions.reserve(vertices.size());

@@ -115,13 +115,13 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
     std::vector<VkDeviceSize> sizes{alignment};
     for (const ArrayView& array : arrays) {
         if (!array.bytes) continue;
-        if (alignment + array.bytes > maxBuffer)
+        if (alignUp(alignment + array.bytes, alignment) > maxBuffer)
             throw std::runtime_error(std::string("the scene's ") + kBindings[array.binding].name +
                                      " take " + std::to_string(array.bytes) +
                                      " bytes, more than this device's maxMemoryAllocationSize "
                                      "of " +
                                      std::to_string(maxBuffer) + " bytes" + device);
-        if (sizes.back() + array.bytes > maxBuffer) sizes.push_back(alignment);
+        if (alignUp(sizes.back() + array.bytes, alignment) > maxBuffer) sizes.push_back(alignment);
         placed[array.binding] = {sizes.size() - 1, sizes.back()};
         sizes.back() = alignUp(sizes.back() + array.bytes, alignment);
     }
