@@ -216,10 +216,14 @@ Mesh groundMesh(const Placement& placement) {
 ModelPlacement placementFacts(const SourceModel& model, const std::vector<bool>& far,
                               const Placement& placement, const Mesh& mesh, bool fitted) {
     ModelPlacement facts;
-    std::vector<glm::dvec3> read;
-    for (std::size_t i = 0; i < model.positions.size(); ++i)
-        if (!far[i]) read.push_back(model.positions[i]);
-    std::tie(facts.readLow, facts.readHigh) = boxOf(read);
+    bool first = true; // the box of the positions that are not far, as read
+    for (std::size_t i = 0; i < model.positions.size(); ++i) {
+        if (far[i]) continue;
+        const glm::dvec3& p = model.positions[i];
+        facts.readLow = first ? p : glm::min(facts.readLow, p);
+        facts.readHigh = first ? p : glm::max(facts.readHigh, p);
+        first = false;
+    }
     std::tie(facts.placedLow, facts.placedHigh) = boxOf(mesh.positions);
     const CameraPose camera = modelCamera(placement);
     facts.centre = camera.target;
@@ -249,10 +253,18 @@ Scene sceneFromModel(const SourceModel& model, const ModelSceneSetup& setup,
                      const std::string& fileName) {
     // The mesh's vertices take most of the time: its triangles are the units.
     PhaseProgress progress("Making a mesh of " + fileName, model.triangles.size());
-    std::vector<glm::dvec3> positions(model.positions.size()), normals(model.normals.size());
-    auto up = [&](const glm::dvec3& v) { return turnUp(v, setup.up); };
-    std::transform(model.positions.begin(), model.positions.end(), positions.begin(), up);
-    std::transform(model.normals.begin(), model.normals.end(), normals.begin(), up);
+    // The model turned so that its up axis is +y; as read, not copied, when it already is.
+    const bool turned = setup.up != UpAxis::PosY;
+    std::vector<glm::dvec3> turnedPositions, turnedNormals;
+    if (turned) {
+        auto up = [&](const glm::dvec3& v) { return turnUp(v, setup.up); };
+        turnedPositions.resize(model.positions.size());
+        turnedNormals.resize(model.normals.size());
+        std::transform(model.positions.begin(), model.positions.end(), turnedPositions.begin(), up);
+        std::transform(model.normals.begin(), model.normals.end(), turnedNormals.begin(), up);
+    }
+    const std::vector<glm::dvec3>& positions = turned ? turnedPositions : model.positions;
+    const std::vector<glm::dvec3>& normals = turned ? turnedNormals : model.normals;
 
     // The fit, the floor and the rig are for the model without positions far beyond it.
     const std::vector<bool> far = farPositions(model.positions);
