@@ -98,17 +98,24 @@ class ChunkReader {
 
     void read(const LogicalLine& logical) {
         const std::string_view text = logical.text;
-        if (text.size() >= 2 && isSpace(text[1])) {
-            if (text[0] == 'v' && simpleNumbers(text, 1, numbers_) &&
+        switch (leadingKeyword(text).value_or(ObjKeyword::ignored)) {
+        case ObjKeyword::position:
+            if (simpleNumbers(text, 1, numbers_) &&
                 (numbers_.size() == 3 || numbers_.size() == 4 || numbers_.size() >= 6))
                 return addPosition(logical.line);
-            if (text[0] == 'f' && simpleFace(text)) return addFace(logical.line);
-        } else if (text.size() >= 3 && text[0] == 'v' && isSpace(text[2])) {
-            if (text[1] == 'n' && simpleNumbers(text, 2, numbers_) && numbers_.size() == 3)
-                return addNormal();
-            if (text[1] == 't' && simpleNumbers(text, 2, numbers_) && numbers_.size() >= 1 &&
-                numbers_.size() <= 3)
+            break;
+        case ObjKeyword::face:
+            if (simpleFace(text)) return addFace(logical.line);
+            break;
+        case ObjKeyword::normal:
+            if (simpleNumbers(text, 2, numbers_) && numbers_.size() == 3) return addNormal();
+            break;
+        case ObjKeyword::texcoord:
+            if (simpleNumbers(text, 2, numbers_) && numbers_.size() >= 1 && numbers_.size() <= 3)
                 return addTexcoord();
+            break;
+        default: // the general reading below
+            break;
         }
         splitStatement(logical, statement_);
         if (!statement_.words.empty()) readStatement();

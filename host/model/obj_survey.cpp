@@ -45,6 +45,18 @@ ObjKeyword objKeyword(std::string_view keyword) {
     return ObjKeyword::ignored;
 }
 
+std::optional<ObjKeyword> leadingKeyword(std::string_view line) {
+    if (line.size() >= 2 && isSpace(line[1])) {
+        if (line[0] == 'v') return ObjKeyword::position;
+        if (line[0] == 'f') return ObjKeyword::face;
+    }
+    if (line.size() >= 3 && line[0] == 'v' && isSpace(line[2])) {
+        if (line[1] == 'n') return ObjKeyword::normal;
+        if (line[1] == 't') return ObjKeyword::texcoord;
+    }
+    return std::nullopt;
+}
+
 std::vector<std::size_t> objChunkStarts(std::string_view text, unsigned threads,
                                         std::size_t minChunkBytes) {
     const std::size_t chunks = chunkCount(text.size(), threads, minChunkBytes);
@@ -75,16 +87,13 @@ ObjChunkSurvey surveyObjChunk(std::string_view chunk, PhaseProgress* progress) {
         share.update();
         const std::string_view text = logical.text;
         // The common statements by their first characters, without splitting them.
-        if (text.size() >= 2 && isSpace(text[1]) && (text[0] == 'v' || text[0] == 'f')) {
-            if (text[0] == 'v')
-                ++survey.positions;
-            else
+        if (const std::optional<ObjKeyword> keyword = leadingKeyword(text)) {
+            if (*keyword == ObjKeyword::face)
                 countFace(survey, countWords(text) - 1);
-            continue;
-        }
-        if (text.size() >= 3 && text[0] == 'v' && (text[1] == 'n' || text[1] == 't') &&
-            isSpace(text[2])) {
-            ++(text[1] == 'n' ? survey.normals : survey.texcoords);
+            else
+                ++(*keyword == ObjKeyword::position ? survey.positions
+                   : *keyword == ObjKeyword::normal ? survey.normals
+                                                    : survey.texcoords);
             continue;
         }
         splitStatement(logical, statement);

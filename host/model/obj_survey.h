@@ -9,6 +9,7 @@
 #include "base/phase_progress.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,6 +17,11 @@
 // What an OBJ statement's keyword makes the reader do.
 enum class ObjKeyword { position, normal, texcoord, face, mtllib, usemtl, skipped, ignored };
 ObjKeyword objKeyword(std::string_view keyword);
+
+// The keyword of the common lines, "v ", "vn ", "vt " and "f " (any space after), found from
+// their first characters without splitting them; none for any other line, whose keyword
+// splitStatement finds. Both passes read a line's kind so, and so count the same.
+std::optional<ObjKeyword> leadingKeyword(std::string_view line);
 
 struct ObjEvent {
     ObjKeyword kind = ObjKeyword::usemtl; // mtllib, usemtl or ignored
