@@ -6,6 +6,7 @@
 #include "cli/output_pattern.h"
 #include "cli/render_settings.h"
 #include "model/scene_file.h"
+#include "render/device_capacity.h"
 #include "render/headless.h"
 #include "render/interrupt.h"
 #include "render/kernel_cache.h"
@@ -115,15 +116,21 @@ int runBatch(const Options& options) {
         destroyContext(context);
     });
     openHeadlessDevice(context, options);
+    const SceneCapacity capacity = sceneCapacityOf(context, !options.storageReads,
+                                                   options.kernel.precision == Precision::Fp64);
 
     int failed = 0;
     std::uint32_t images = 0;
     for (const std::filesystem::path& scenePath : scenes) {
         Scene scene;
         try {
-            scene = loadScene(scenePath, objSceneSetup(options));
+            scene = loadScene(scenePath, objSceneSetup(options), &capacity);
         } catch (const SceneError& error) {
             std::cerr << error.what() << '\n';
+            ++failed;
+            continue;
+        } catch (const CapacityError& error) { // the next scene may fit
+            std::cerr << "error: " << error.what() << '\n';
             ++failed;
             continue;
         }

@@ -167,8 +167,17 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
         options.width = std::uint32_t(compared->levels.width);
         options.height = std::uint32_t(compared->levels.height);
     }
+    // A scene that will be rendered is checked against the device as soon as its size is
+    // known; one only checked or converted is not.
+    const bool converting =
+        options.checkOnly ||
+        (!options.saveScenePath.empty() && options.outputPath.empty() && options.benchFrames == 0 &&
+         !options.pixelGiven && !options.forceWindow && options.benchWindowFrames == 0);
+    const std::optional<SceneCapacity> capacity =
+        converting ? std::nullopt : capacityBeforeLoading(options);
     const auto parseStart = std::chrono::steady_clock::now();
-    Scene scene = loadScene(options.scenePath, objSceneSetup(options));
+    Scene scene =
+        loadScene(options.scenePath, objSceneSetup(options), capacity ? &*capacity : nullptr);
     startup.parseMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - parseStart)
             .count();
@@ -180,10 +189,7 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
             !unwritten.empty())
             note("%s\n", unwritten.c_str());
         note("Wrote %s\n", options.saveScenePath.string().c_str());
-        const bool nothingElse = options.outputPath.empty() && options.benchFrames == 0 &&
-                                 !options.pixelGiven && !options.forceWindow &&
-                                 options.benchWindowFrames == 0 && !options.checkOnly;
-        if (nothingElse) return kSuccess;
+        if (converting && !options.checkOnly) return kSuccess;
     }
     if (options.checkOnly) { // the scene parsed: it is valid; no Vulkan from here either
         std::cout << options.scenePath.string() << ": valid\n" << sceneSummary(scene);

@@ -2,8 +2,12 @@
 #include "cli/render_settings.h"
 
 #include "gpu/image_limits.h"
+#include "gpu/limit_overrides.h"
 #include "gpu/pipeline_cache.h"
 #include "model/model_fit.h"
+#include "render/device_capacity.h"
+
+#include <filesystem>
 
 RenderSettings renderSettingsFrom(const Options& options) {
     RenderSettings settings;
@@ -67,4 +71,14 @@ CameraPose turntableFrameCamera(const Options& options, const Scene& scene,
 
 bool terminatorFixFor(const Options& options, const Scene& scene) {
     return options.terminator.value_or(scene.model.has_value());
+}
+
+std::optional<SceneCapacity> capacityBeforeLoading(const Options& options) {
+    std::error_code error;
+    const std::uintmax_t bytes = std::filesystem::file_size(options.scenePath, error);
+    const LimitOverrides& lowered = limitOverrides();
+    const bool limitsLowered = lowered.maxStorageBufferRange || lowered.maxMemoryAllocationSize;
+    if (!limitsLowered && (error || bytes < kProbedFileBytes)) return std::nullopt;
+    return probeSceneCapacity(options.device, !options.storageReads,
+                              options.kernel.precision == Precision::Fp64);
 }

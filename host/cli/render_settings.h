@@ -6,6 +6,9 @@
 
 #include "cli/options.h"
 #include "render/renderer.h"
+#include "scene/scene_capacity.h"
+
+#include <optional>
 
 // The settings as the command line gives them, the shader and pipeline cache folder
 // included (none with --no-cache). Not progressive: one frame of samplesPerPixel.
@@ -41,3 +44,10 @@ bool terminatorFixFor(const Options& options, const Scene& scene);
 // layer for --validate, the device --device names (with fp64 when --precision fp64 asks
 // for it), and the image size checked against what it can hold.
 void openHeadlessDevice(Context& context, const Options& options);
+
+// What the device of this run can hold, for loadScene's early check (scene_capacity.h):
+// probed before a file of kProbedFileBytes or more is read, or whatever its size when a hidden
+// option lowers a limit (the tests). A smaller file does not pay for an instance; the upload
+// checks it.
+inline constexpr std::uintmax_t kProbedFileBytes = 16u << 20;
+std::optional<SceneCapacity> capacityBeforeLoading(const Options& options);

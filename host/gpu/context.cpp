@@ -210,8 +210,7 @@ void requireFloat64(const VkPhysicalDeviceFeatures& features, const char* device
                                  "choose another device with --device");
 }
 
-void createDevice(Context& context, const std::string& deviceRequest, VkSurfaceKHR surface,
-                  bool needFloat64) {
+void chooseDevice(Context& context, const std::string& deviceRequest, VkSurfaceKHR surface) {
     std::uint32_t count = 0;
     VK_CHECK(vkEnumeratePhysicalDevices(context.instance, &count, nullptr));
     std::vector<VkPhysicalDevice> devices(count);
@@ -242,30 +241,35 @@ void createDevice(Context& context, const std::string& deviceRequest, VkSurfaceK
         context.maxMemoryAllocationSize = lowered.maxMemoryAllocationSize;
     context.queueFamily = chosen.queueFamily;
     vkGetPhysicalDeviceMemoryProperties(chosen.device, &context.memoryProperties);
-    note("Device: %s (%s)\n", chosen.properties.deviceName,
-         deviceTypeName(chosen.properties.deviceType));
+}
+
+void createDevice(Context& context, const std::string& deviceRequest, VkSurfaceKHR surface,
+                  bool needFloat64) {
+    chooseDevice(context, deviceRequest, surface);
+    note("Device: %s (%s)\n", context.properties.deviceName,
+         deviceTypeName(context.properties.deviceType));
     if (requestedCpuDriverThreads() > 0 &&
-        chosen.properties.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU)
+        context.properties.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU)
         note("note: --threads %u sets a CPU driver's threads; %s is not one\n",
-             requestedCpuDriverThreads(), chosen.properties.deviceName);
+             requestedCpuDriverThreads(), context.properties.deviceName);
     VkPhysicalDeviceFeatures enabledFeatures{};
     if (needFloat64) {
         VkPhysicalDeviceFeatures supported{};
-        vkGetPhysicalDeviceFeatures(chosen.device, &supported);
-        requireFloat64(supported, chosen.properties.deviceName);
+        vkGetPhysicalDeviceFeatures(context.physicalDevice, &supported);
+        requireFloat64(supported, context.properties.deviceName);
         enabledFeatures.shaderFloat64 = VK_TRUE;
     }
 
     std::uint32_t familyCount = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(chosen.device, &familyCount, nullptr);
+    vkGetPhysicalDeviceQueueFamilyProperties(context.physicalDevice, &familyCount, nullptr);
     std::vector<VkQueueFamilyProperties> families(familyCount);
-    vkGetPhysicalDeviceQueueFamilyProperties(chosen.device, &familyCount, families.data());
-    context.timestampsSupported = families[chosen.queueFamily].timestampValidBits > 0 &&
-                                  chosen.properties.limits.timestampPeriod > 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(context.physicalDevice, &familyCount, families.data());
+    context.timestampsSupported = families[context.queueFamily].timestampValidBits > 0 &&
+                                  context.properties.limits.timestampPeriod > 0;
 
     float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-    queueInfo.queueFamilyIndex = chosen.queueFamily;
+    queueInfo.queueFamilyIndex = context.queueFamily;
     queueInfo.queueCount = 1;
     queueInfo.pQueuePriorities = &priority;
     const char* swapchainExtension = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
@@ -277,13 +281,13 @@ void createDevice(Context& context, const std::string& deviceRequest, VkSurfaceK
         info.enabledExtensionCount = 1;
         info.ppEnabledExtensionNames = &swapchainExtension;
     }
-    VK_CHECK(vkCreateDevice(chosen.device, &info, nullptr, &context.device));
+    VK_CHECK(vkCreateDevice(context.physicalDevice, &info, nullptr, &context.device));
     context.float64Enabled = needFloat64;
-    vkGetDeviceQueue(context.device, chosen.queueFamily, 0, &context.queue);
+    vkGetDeviceQueue(context.device, context.queueFamily, 0, &context.queue);
 
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    poolInfo.queueFamilyIndex = chosen.queueFamily;
+    poolInfo.queueFamilyIndex = context.queueFamily;
     VK_CHECK(vkCreateCommandPool(context.device, &poolInfo, nullptr, &context.commandPool));
 }
 

@@ -29,6 +29,12 @@ struct Context {
 // validate: enable VK_LAYER_KHRONOS_validation and count every message it prints.
 void createInstance(Context& context, const std::vector<const char*>& extensions, bool validate);
 
+// Chooses a device as createDevice does and reads its properties and limits (lowered by
+// limit_overrides.h) into the context, without creating it: what a device can hold is known
+// before a large scene is read (render/device_capacity.h).
+void chooseDevice(Context& context, const std::string& deviceRequest,
+                  VkSurfaceKHR surface = VK_NULL_HANDLE);
+
 // Chooses a device: deviceRequest (a name substring or an index, as --device) when
 // given, otherwise a discrete GPU before an integrated, virtual or CPU one. With a
 // surface, only devices that can present to it qualify. Prints the choice to stderr.

@@ -158,6 +158,8 @@ SourceModel parseObj(std::string_view text, const std::string& fileName, const M
     std::vector<ObjChunkPlace> places{ObjChunkPlace{}};
     for (const ObjChunkSurvey& survey : surveys)
         places.push_back(places.back() + survey);
+    if (options.capacity)
+        checkTriangleCapacity(*options.capacity, places.back().triangles, fileName);
 
     SourceModel model;
     model.materials.push_back(defaultModelMaterial());
@@ -202,28 +204,33 @@ SourceModel parseObj(std::string_view text, const std::string& fileName, const M
     return model;
 }
 
-SourceModel readObjFile(const std::filesystem::path& path, std::string_view text) {
+SourceModel readObjFile(const std::filesystem::path& path, std::string_view text,
+                        const SceneCapacity* capacity) {
     const std::string name = path.string();
     std::error_code error;
     const std::string folder = directoryOf(name);
-    return parseObj(text, name, [&](const std::string& library) {
-        MtlFile mtl{folder.empty() ? library : (std::filesystem::path(folder) / library).string(),
-                    std::nullopt};
-        if (!std::filesystem::exists(mtl.path, error)) return mtl;
-        // A file the model names is read only when it is a file, and not beyond a size no
-        // material library has: a device (mtllib /dev/zero) would be read without end.
-        if (!std::filesystem::is_regular_file(mtl.path, error))
-            throw SceneError(mtl.path, 0,
-                             "not a regular file (a device, a pipe or a folder): a material "
-                             "library must be a file");
-        if (const std::uintmax_t size = std::filesystem::file_size(mtl.path, error);
-            !error && size > kMaxMtlBytes)
-            throw SceneError(mtl.path, 0,
-                             "the file holds " + std::to_string(size) +
-                                 " bytes, more than a material library may (" +
-                                 std::to_string(kMaxMtlBytes >> 20) + " MiB)");
-        const MappedFile mtlFile(mtl.path); // an unreadable library is an error, as the OBJ is
-        mtl.text = std::string(mtlFile.text());
-        return mtl;
-    });
+    return parseObj(
+        text, name,
+        [&](const std::string& library) {
+            MtlFile mtl{folder.empty() ? library
+                                       : (std::filesystem::path(folder) / library).string(),
+                        std::nullopt};
+            if (!std::filesystem::exists(mtl.path, error)) return mtl;
+            // A file the model names is read only when it is a file, and not beyond a size no
+            // material library has: a device (mtllib /dev/zero) would be read without end.
+            if (!std::filesystem::is_regular_file(mtl.path, error))
+                throw SceneError(mtl.path, 0,
+                                 "not a regular file (a device, a pipe or a folder): a material "
+                                 "library must be a file");
+            if (const std::uintmax_t size = std::filesystem::file_size(mtl.path, error);
+                !error && size > kMaxMtlBytes)
+                throw SceneError(mtl.path, 0,
+                                 "the file holds " + std::to_string(size) +
+                                     " bytes, more than a material library may (" +
+                                     std::to_string(kMaxMtlBytes >> 20) + " MiB)");
+            const MappedFile mtlFile(mtl.path); // an unreadable library is an error, as the OBJ is
+            mtl.text = std::string(mtlFile.text());
+            return mtl;
+        },
+        ObjParseOptions{.capacity = capacity});
 }

@@ -10,6 +10,7 @@
 
 #include "model/mtl_reader.h"
 #include "model/source_model.h"
+#include "scene/scene_capacity.h"
 
 #include <cstddef>
 #include <filesystem>
@@ -19,9 +20,12 @@
 // How the text is shared among threads: as many chunks as threads (0: workerThreads(),
 // base/parallel.h), none shorter than minChunkBytes. The model, its warnings and its errors
 // are the same whatever the split.
+// With a capacity, a file of more triangles than the device holds is refused once the survey
+// has counted them, before the text is read.
 struct ObjParseOptions {
     unsigned threads = 0;
     std::size_t minChunkBytes = 1u << 20;
+    const SceneCapacity* capacity = nullptr;
 };
 
 // fileName is used in messages; lookUpMtl finds the libraries that mtllib names.
@@ -30,4 +34,5 @@ SourceModel parseObj(std::string_view text, const std::string& fileName, const M
 
 // The model in text, the file at path (whose name is used in messages), with the
 // libraries beside it that it names.
-SourceModel readObjFile(const std::filesystem::path& path, std::string_view text);
+SourceModel readObjFile(const std::filesystem::path& path, std::string_view text,
+                        const SceneCapacity* capacity = nullptr);

@@ -18,9 +18,10 @@
 
 namespace {
 
-// A model made a scene, with the textures it names.
-Scene texturedScene(const SourceModel& model, const ModelSceneSetup& setup,
-                    const std::string& name) {
+// A model made a scene, with the textures it names, when the device holds its triangles.
+Scene texturedScene(const SourceModel& model, const ModelSceneSetup& setup, const std::string& name,
+                    const SceneCapacity* capacity) {
+    if (capacity) checkTriangleCapacity(*capacity, model.triangles.size(), name);
     const PhaseTimer timer("model");
     Scene scene = sceneFromModel(model, setup, name);
     loadTextures(scene, name, model.embeddedTextures);
@@ -35,7 +36,8 @@ template <typename Read> SourceModel timedRead(Read read) {
 
 } // namespace
 
-Scene loadScene(const std::filesystem::path& path, const ModelSceneSetup& modelSetup) {
+Scene loadScene(const std::filesystem::path& path, const ModelSceneSetup& modelSetup,
+                const SceneCapacity* capacity) {
     const std::string name = path.string();
     std::error_code error;
     // open succeeds on a directory on Linux and only the read fails; say it plainly.
@@ -45,20 +47,24 @@ Scene loadScene(const std::filesystem::path& path, const ModelSceneSetup& modelS
     const std::optional<OtherFormat> format = otherFileFormat(file.text());
     if (format == OtherFormat::Ply || (!format && isPlyPath(path)))
         return texturedScene(timedRead([&] { return readPly(file.text(), name); }), modelSetup,
-                             name);
+                             name, capacity);
     if (format == OtherFormat::Stl || (!format && isStlPath(path)))
         return texturedScene(timedRead([&] { return readStl(file.text(), name); }), modelSetup,
-                             name);
+                             name, capacity);
     if (format && *format != OtherFormat::Utf16Text)
         return texturedScene(timedRead([&] { return readAssimpModel(file.text(), path, format); }),
-                             modelSetup, name);
+                             modelSetup, name, capacity);
     if (isObjPath(path))
-        return texturedScene(timedRead([&] { return readObjFile(path, file.text()); }), modelSetup,
-                             name);
+        return texturedScene(timedRead([&] { return readObjFile(path, file.text(), capacity); }),
+                             modelSetup, name, capacity);
     if (isAssimpPath(path) && !format)
         return texturedScene(
             timedRead([&] { return readAssimpModel(file.text(), path, std::nullopt); }), modelSetup,
-            name);
-    const PhaseTimer timer("read");
-    return parseScene(file.text(), name);
+            name, capacity);
+    Scene scene = [&] {
+        const PhaseTimer timer("read");
+        return parseScene(file.text(), name);
+    }();
+    if (capacity) checkTriangleCapacity(*capacity, scene.triangles.size(), name);
+    return scene;
 }

@@ -7,8 +7,13 @@
 
 #include "model/model_scene.h"
 #include "scene/scene.h"
+#include "scene/scene_capacity.h"
 
 #include <filesystem>
 
 // A missing, unreadable, binary or malformed file, or a device, is a SceneError naming it.
-Scene loadScene(const std::filesystem::path& path, const ModelSceneSetup& modelSetup = {});
+// With a capacity, a file of more triangles than it holds is refused as soon as their count
+// is known: an OBJ's after its survey, before it is read; any other's before it is made a
+// scene and packed.
+Scene loadScene(const std::filesystem::path& path, const ModelSceneSetup& modelSetup = {},
+                const SceneCapacity* capacity = nullptr);

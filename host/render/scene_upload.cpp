@@ -3,6 +3,7 @@
 #include "base/scope_guard.h"
 #include "gpu/vk_check.h"
 #include "render/bindings.h"
+#include "render/device_capacity.h"
 
 #include <algorithm>
 #include <cstring>
@@ -58,11 +59,9 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
         view(BINDING_VERTEX_TEXCOORDS, packed.vertexTexcoords),
         view(BINDING_MATERIAL_TEXTURES, packed.materialTextures),
         view(BINDING_TEXTURE_PIXELS, packed.texturePixels),
-    }; // A dvec4 array needs 32-byte alignment; each range may also be a texel buffer's.
+    };
     const VkPhysicalDeviceLimits& limits = context.properties.limits;
-    const VkDeviceSize alignment =
-        std::max({VkDeviceSize(fp64 ? 32 : 16), limits.minStorageBufferOffsetAlignment,
-                  limits.minTexelBufferOffsetAlignment});
+    const VkDeviceSize alignment = sceneArrayAlignment(limits, fp64);
     const VkDeviceSize maxRange = limits.maxStorageBufferRange;
     const VkDeviceSize maxBuffer =
         context.maxMemoryAllocationSize ? context.maxMemoryAllocationSize : ~VkDeviceSize(0);

@@ -2,7 +2,9 @@
 // maxStorageBufferRange is read through its texel view alone, and the arrays are spread over
 // as many buffers as maxMemoryAllocationSize takes. The hidden --max-storage-range and
 // --max-allocation lower those limits, so that a small scene takes the path of a large one:
-// its image must be the same bytes as under the real limits.
+// its image must be the same bytes as under the real limits. What cannot fit is refused
+// as soon as its triangles are counted, naming the limit, the device and the largest scene
+// that fits; a scene at that size renders.
 #include "gpu/context.h"
 #include "packing/scene_packing.h"
 #include "render/scene_upload.h"
@@ -55,6 +57,8 @@ TEST(SceneLimits, ArraysBeyondOneBindingOrAllocationRenderTheSameImage) {
     }
 }
 
+// A scene beyond a lowered limit is refused by the early check (scene_capacity.h), which
+// names the limit, the device and the largest scene that fits.
 TEST(SceneLimits, WhatCannotBeReadSoNamesTheLimitAndTheDevice) {
     const std::filesystem::path dir = freshOutputDir("scene-limits/errors");
     const std::filesystem::path scene = dir / "mesh.scene";
@@ -65,27 +69,100 @@ TEST(SceneLimits, WhatCannotBeReadSoNamesTheLimitAndTheDevice) {
         std::vector<std::string> more;
         std::string expected;
     };
+    const std::string holds =
+        "error: " + scene.string() + " holds 200 triangles, more than llvmpipe";
     const Case cases[] = {
         // The storage path reads every array from its binding.
         {{"--max-storage-range", "256", "--storage-reads"},
-         "error: the scene's triangle corners take 9600 bytes, more than this device's "
-         "maxStorageBufferRange of 256 bytes (llvmpipe"},
+         "can hold: its maxStorageBufferRange of 256 bytes (48 a triangle) sets the largest "
+         "scene at 5 triangles\n"},
         // fp64 reads its doubles from storage.
         {{"--max-storage-range", "256", "--precision", "fp64"},
-         "error: the scene's triangle corners take 19200 bytes, more than this device's "
-         "maxStorageBufferRange of 256 bytes"},
-        // One array in one allocation.
+         "can hold: its maxStorageBufferRange of 256 bytes (96 a triangle) sets the largest "
+         "scene at 2 triangles in fp64\n"},
+        // One array in one allocation: 4096 bytes less the zeroed slot, 48 bytes a triangle.
         {{"--max-allocation", "4096"},
-         "error: the scene's triangle corners take 9600 bytes, more than this device's "
-         "maxMemoryAllocationSize of 4096 bytes (llvmpipe"},
+         "can hold: its maxMemoryAllocationSize of 4096 bytes (48 a triangle, in one "
+         "allocation) sets the largest scene at 85 triangles\n"},
     };
     for (const Case& c : cases) {
         std::vector<std::string> args = common;
         args.insert(args.end(), c.more.begin(), c.more.end());
         const ProcessResult run = runRaytracer(args);
-        EXPECT_NE(run.exitCode, 0);
+        EXPECT_EQ(run.exitCode, 1);
+        EXPECT_NE(run.err.find(holds), std::string::npos) << run.err;
         EXPECT_NE(run.err.find(c.expected), std::string::npos) << run.err;
+        EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
     }
+}
+
+// An OBJ of n triangles, each its own three positions; a last line with a word for a number when
+// `broken`.
+std::string stripObj(int n, bool broken) {
+    std::string text;
+    for (int i = 0; i < n; ++i)
+        text += "v " + std::to_string(0.1 * i) + " 0 0\nv " + std::to_string(0.1 * i + 0.1) +
+                " 0 0\nv " + std::to_string(0.1 * i) + " 1 0.2\nf -3 -2 -1\n";
+    return broken ? text + "v 0 zero 0\n" : text;
+}
+
+// The OBJ's count is checked after its survey, before the text is read: a file one triangle
+// over the limit is refused for its size even though its last line is wrong, and a file at
+// the limit renders as under the real limits.
+TEST(SceneLimits, TheEarlyCheckRunsBeforeTheReadAndLetsTheLargestSceneThrough) {
+    const std::filesystem::path dir = freshOutputDir("scene-limits/early");
+    const int triangles = 30;
+    const std::string atLimit = std::to_string(48 * triangles); // --storage-reads: 48 a triangle
+    const std::string under = std::to_string(48 * triangles - 1);
+    writeTextFile(dir / "strip.obj", stripObj(triangles, false));
+    writeTextFile(dir / "broken.obj", stripObj(triangles, true));
+    auto run = [&](const std::string& model, const std::string& range, const std::string& png) {
+        std::vector<std::string> args = {(dir / model).string(),
+                                         "--no-ground",
+                                         "--storage-reads",
+                                         "--width",
+                                         "32",
+                                         "--height",
+                                         "24",
+                                         "--validate",
+                                         "-o",
+                                         (dir / png).string()};
+        if (!range.empty()) args.insert(args.end(), {"--max-storage-range", range});
+        return runRaytracer(args);
+    };
+    const ProcessResult refused = run("broken.obj", under, "broken.png");
+    EXPECT_EQ(refused.exitCode, 1);
+    EXPECT_NE(refused.err.find("broken.obj holds 30 triangles, more than llvmpipe"),
+              std::string::npos)
+        << refused.err;
+    EXPECT_NE(refused.err.find("sets the largest scene at 29 triangles"), std::string::npos);
+    const ProcessResult read = run("broken.obj", atLimit, "broken.png");
+    EXPECT_EQ(read.exitCode, 3);
+    EXPECT_NE(read.err.find("broken.obj:121: error:"), std::string::npos) << read.err;
+
+    const ProcessResult limited = run("strip.obj", atLimit, "limited.png");
+    ASSERT_EQ(limited.exitCode, 0) << limited.err;
+    const ProcessResult unlimited = run("strip.obj", "", "unlimited.png");
+    ASSERT_EQ(unlimited.exitCode, 0) << unlimited.err;
+    EXPECT_EQ(readWholeFile(dir / "limited.png"), readWholeFile(dir / "unlimited.png"));
+    EXPECT_FALSE(readWholeFile(dir / "limited.png").empty());
+}
+
+// A batch goes on past a scene too large for the device, and says so.
+TEST(SceneLimits, ABatchSkipsASceneTooLargeForTheDevice) {
+    const std::filesystem::path dir = freshOutputDir("scene-limits/batch");
+    writeTextFile(dir / "large.obj", stripObj(30, false));
+    writeTextFile(dir / "small.obj", stripObj(10, false));
+    const ProcessResult run =
+        runRaytracer({(dir / "large.obj").string(), (dir / "small.obj").string(), "-o",
+                      (dir / "{name}.png").string(), "--storage-reads", "--max-storage-range",
+                      "960", "--width", "32", "--height", "24", "--validate"});
+    EXPECT_EQ(run.exitCode, 3);
+    EXPECT_NE(run.err.find("large.obj holds 30 triangles, more than llvmpipe"), std::string::npos)
+        << run.err;
+    EXPECT_NE(run.err.find("sets the largest scene at 20 triangles"), std::string::npos);
+    EXPECT_FALSE(std::filesystem::exists(dir / "large.png"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "small.png"));
 }
 
 // The upload itself: how many buffers, and which bindings see only the zeroed slot.
@@ -115,7 +192,18 @@ TEST(SceneLimits, TheUploadSpreadsTheArraysAndViewsTheLargeOnes) {
     EXPECT_EQ(split.ranges[BINDING_TRIANGLE_CORNERS].offset, 0u);
     EXPECT_EQ(split.ranges[BINDING_TRIANGLE_LAST_VERTICES].range, 400u); // within the range
     destroyGpuScene(context, split);
-    EXPECT_THROW(uploadScene(context, packed, false), std::runtime_error);
+    // What the early check lets through the upload checks again, array by array.
+    try {
+        uploadScene(context, packed, false);
+        ADD_FAILURE() << "the corners are beyond the storage range";
+    } catch (const std::runtime_error& error) {
+        EXPECT_NE(std::string(error.what())
+                      .find("the scene's triangle corners take 4800 bytes, "
+                            "more than this device's maxStorageBufferRange "
+                            "of 1024 bytes (llvmpipe"),
+                  std::string::npos)
+            << error.what();
+    }
     destroyContext(context);
 }
 
