@@ -59,19 +59,30 @@ def cross(a, b):
 # list of vertex-index triples.
 
 
+class GridTriangles:
+    """The triangles of the quads of a nu x nv vertex grid that wraps in u (and in v if
+    wrap_v), made as they are read: a list of 30 million tuples would take gigabytes."""
+
+    def __init__(self, nu, nv, wrap_v):
+        self.nu, self.nv, self.vcount = nu, nv, nv if wrap_v else nv - 1
+
+    def __len__(self):
+        return 2 * self.nu * self.vcount
+
+    def __iter__(self):
+        nu, nv = self.nu, self.nv
+        for i in range(nu):
+            i1 = (i + 1) % nu
+            for j in range(self.vcount):
+                j1 = (j + 1) % nv
+                a, b = i * nv + j, i1 * nv + j
+                c, d = i1 * nv + j1, i * nv + j1
+                yield (a, b, c)
+                yield (a, c, d)
+
+
 def grid_triangles(nu, nv, wrap_v):
-    """Quads of a nu x nv vertex grid that wraps in u (and in v if wrap_v)."""
-    tris = []
-    vcount = nv if wrap_v else nv - 1
-    for i in range(nu):
-        i1 = (i + 1) % nu
-        for j in range(vcount):
-            j1 = (j + 1) % nv
-            a, b = i * nv + j, i1 * nv + j
-            c, d = i1 * nv + j1, i * nv + j1
-            tris.append((a, b, c))
-            tris.append((a, c, d))
-    return tris
+    return GridTriangles(nu, nv, wrap_v)
 
 
 def torus(n, major=1.0, minor=0.4):
@@ -275,35 +286,42 @@ def write_texture(obj_path, image_path):
 
 def write_obj(path, positions, normals, colors, triangles, texcoords=None):
     """The mesh as OBJ: one v (with its colour, if any) and one vn per vertex (none when
-    normals is empty: the reader makes them), one f each;
+    normals is None: the reader makes them), one f each; positions, normals and colours
+    may be generators, written as they come;
     with texcoords (grid_texcoords' vt lines and indices), f's corners are v/vt/vn and the
     header names the material (write_texture's lines)."""
     with open(path, "w", newline="\n") as out:
         out.write("# %d triangles, written by tools/make_mesh.py\n" % len(triangles))
         if texcoords:
             out.write(texcoords[2])
-        chunk = []
-        for k, p in enumerate(positions):
-            colour = " " + vec(colors[k]) if colors else ""
-            chunk.append("v %s%s\n" % (vec(p), colour))
-        chunk.extend("vn %s\n" % vec(n) for n in normals)
+
+        def lines(texts):
+            chunk = []
+            for text in texts:
+                chunk.append(text)
+                if len(chunk) >= 40000:
+                    out.writelines(chunk)
+                    chunk = []
+            out.writelines(chunk)
+
+        if colors is not None:
+            lines("v %s %s\n" % (vec(p), vec(c)) for p, c in zip(positions, colors))
+        else:
+            lines("v %s\n" % vec(p) for p in positions)
+        if normals is not None:
+            lines("vn %s\n" % vec(n) for n in normals)
         if texcoords:
-            chunk.extend(texcoords[0])
-        out.writelines(chunk)
-        chunk = []
-        for t, (i, j, k) in enumerate(triangles):
-            if texcoords:
-                ti, tj, tk = texcoords[1][t]
-                chunk.append("f %d/%d/%d %d/%d/%d %d/%d/%d\n" % (i + 1, ti + 1, i + 1, j + 1, tj + 1, j + 1,
-                                                               k + 1, tk + 1, k + 1))
-            elif normals:
-                chunk.append("f %d//%d %d//%d %d//%d\n" % (i + 1, i + 1, j + 1, j + 1, k + 1, k + 1))
-            else:
-                chunk.append("f %d %d %d\n" % (i + 1, j + 1, k + 1))
-            if len(chunk) >= 40000:
-                out.writelines(chunk)
-                chunk = []
-        out.writelines(chunk)
+            out.writelines(texcoords[0])
+        if texcoords:
+            faces = ("f %d/%d/%d %d/%d/%d %d/%d/%d\n" % (i + 1, ti + 1, i + 1, j + 1, tj + 1, j + 1,
+                                                       k + 1, tk + 1, k + 1)
+                     for (i, j, k), (ti, tj, tk) in zip(triangles, texcoords[1]))
+        elif normals is not None:
+            faces = ("f %d//%d %d//%d %d//%d\n" % (i + 1, i + 1, j + 1, j + 1, k + 1, k + 1)
+                     for i, j, k in triangles)
+        else:
+            faces = ("f %d %d %d\n" % (i + 1, j + 1, k + 1) for i, j, k in triangles)
+        lines(faces)
     return 0
 
 
@@ -336,6 +354,14 @@ def main(argv):
         p = rot(v)
         return (ox + s * p[0], oy + s * p[1], oz + s * p[2])
 
+    if a.out.lower().endswith(".obj"):
+        texcoords = None
+        if a.texture:
+            texcoords = (*grid_texcoords(tris, grid), write_texture(a.out, a.texture))
+        return write_obj(a.out, (place(p) for p in pos),
+                         None if a.no_normals else (rot(n) for n in nor),
+                         (ramp(t) for t in par) if a.color == "ramp" else None, tris, texcoords)
+
     blocks = []
     ymin = math.inf
     for k in range(len(pos)):
@@ -365,13 +391,6 @@ def main(argv):
                       % (vec((ox - 1.9 * s, g + r1, oz - 1.2 * s)), fmt(r1)))
         extras.append("sphere\npos: %s\nrad: %s\ndif: 0.2 0.35 0.8\nspe: 0.3 0.3 0.3\nshi: 60\n"
                       % (vec((ox + 1.8 * s, g + r2, oz + 0.2 * s)), fmt(r2)))
-
-    if a.out.lower().endswith(".obj"):
-        texcoords = None
-        if a.texture:
-            texcoords = (*grid_texcoords(tris, grid), write_texture(a.out, a.texture))
-        return write_obj(a.out, [place(p) for p in pos], [] if a.no_normals else [rot(n) for n in nor],
-                         [ramp(t) for t in par] if a.color == "ramp" else None, tris, texcoords)
 
     count = len(lights) + len(extras) + len(tris)
     out = sys.stdout if a.out == "-" else open(a.out, "w", newline="\n")
