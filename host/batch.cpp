@@ -68,8 +68,6 @@ void renderScene(const Options& options, const Context& context, KernelCache& ke
     });
     createRenderer(renderer, context, scene, settings, &kernels);
     createHeadlessTarget(target, context, renderer, options.regionSide);
-    if (options.cropGiven)
-        target.crop = {options.crop.x, options.crop.y, options.crop.z, options.crop.w};
     for (const FrameView& frame : frames) {
         const std::filesystem::path output =
             expandOutputPattern(options.outputPath.string(), name, frame.number);

@@ -108,7 +108,8 @@ std::string runBenchmark(const Context& context, Renderer& renderer, HeadlessTar
     }
     const double cpuMsPerFrame = (processCpuMilliseconds() - cpuStart) / options.benchFrames;
     const RenderSettings& settings = renderer.settings;
-    double pixels = double(settings.width) * settings.height;
+    const TraceRegion traced = outputRegion(settings); // the crop, or all of the image
+    double pixels = double(traced.width) * traced.height;
     double wallMedian = median(wallMs);
 
     std::ostringstream json;

@@ -96,8 +96,6 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
     settings.floatOutput = writing && holdsFloats(*outputFormatOf(options.outputPath));
     createRenderer(renderer, context, scene, settings);
     createHeadlessTarget(target, context, renderer, options.regionSide);
-    if (options.cropGiven)
-        target.crop = {options.crop.x, options.crop.y, options.crop.z, options.crop.w};
     if (options.benchFrames > 0)
         std::cout << runBenchmark(context, renderer, target, options, startup) << std::endl;
     else if (writing)
@@ -126,7 +124,7 @@ int run(int argc, char** argv, std::chrono::steady_clock::time_point processStar
                          : options.progress ? ProgressMode::Always
                                             : ProgressMode::Auto);
     requestCpuDriverThreads(options.cpuThreads); // before any Vulkan call reads it
-    setLimitOverrides({options.maxStorageRange, options.maxAllocation});
+    setLimitOverrides({options.maxStorageRange, options.maxAllocation, options.maxImageSide});
     setWorkerThreads(options.cpuThreads); // the host's own threads, the same count
     if (options.showHelp) {
         std::cout << usageText();

@@ -29,6 +29,12 @@ using uint = std::uint32_t;
 // The deepest reflection recursion the shader supports (--depth is capped here).
 #define MAX_DEPTH 64
 
+// The widest and tallest image (--width, --height): a pixel's column and row fit 16 bits
+// (GpuFrameParams packs a region's origin so), and in float a coordinate keeps sample
+// positions within 1/128 of a pixel (camera.glsl). A poster larger than the device's image
+// limit renders in --crop parts (RenderSettings::crop).
+#define MAX_IMAGE_SIDE 65536
+
 // Descriptor set 0. Each scene array has its own binding; all of them are
 // sub-ranges of one device buffer (host/render/scene_upload.cpp lays them out). What each
 // binding is (its descriptor type, what fills it) is host/render/bindings.cpp's table.
@@ -118,6 +124,9 @@ using uint = std::uint32_t;
 #define SPEC_SHIFT_SHADOW_ORIGIN 18
 // bool: some material samples a texture (else texture coordinates and texels are compiled out).
 #define SPEC_HAS_TEXTURES 19
+// bool: the output image holds a part of the full image (headless --crop), placed by
+// GpuFrameParams; else all of it, and the kernel is the one without the part's arithmetic.
+#define SPEC_OUTPUT_PART 20
 // The most spheres baked in: the closest-hit loop over them is unrolled, one test each.
 #define MAX_BAKED_SPHERES 15u
 #define RAY_OFFSET_FIXED 0u       // 1e-4 along the normal
@@ -179,18 +188,22 @@ struct GpuBvhNode {
 
 // Per-dispatch parameters, passed as push constants (at most 128 bytes).
 struct GpuFrameParams {
-    vec4 background;        // rgb colour of rays that hit nothing, w unused
-    vec4 ambient;           // rgb ambient light added once per shading point, w unused
+    // With SPEC_OUTPUT_PART (headless --crop, whose output image is the crop's size), the
+    // part of the full image the output image holds, in the w of three vectors (the uints'
+    // bits): background.w and ambient.w its end, x and y (one past its last pixel),
+    // cameraOrigin.w its first pixel, x | y << 16 (both below MAX_IMAGE_SIDE).
+    vec4 background;        // rgb colour of rays that hit nothing
+    vec4 ambient;           // rgb ambient light added once per shading point
     vec4 camera;            // x: aspect * tan(fov/2), y: tan(fov/2), z: the stride of the
                             // workgroup rows' order over the dispatch's rows of tiles (the
                             // uint's bits; host/packing/workgroup_order.h), w:
                             // LOOP_PROBE_ITERATIONS (the uint's bits; trace.comp, main)
-    vec4 cameraOrigin;      // the eye in world space: xyz, w unused (0 for the default camera)
+    vec4 cameraOrigin;      // the eye in world space: xyz
     vec4 cameraOrientation; // unit quaternion xyzw, camera space to world (0,0,0,1 for the default
                             // camera)
-    uvec4 image;  // x: width, y: height, z: samples per pixel n (sampleOffset's n), w: reflection
-                  // depth
-    uvec4 counts; // x: spheres, y: triangles, z: lights, w: sampling seed (--seed)
+    uvec4 image;            // x: width, y: height of the full image, z: samples per pixel n
+                            // (sampleOffset's n), w: reflection depth
+    uvec4 counts;           // x: spheres, y: triangles, z: lights, w: sampling seed (--seed)
     // xy: first pixel of this dispatch. zw: the samples it adds: z the index of the first,
     // w how many; w == 0 traces all image.z samples in one pass (headless). With w > 0
     // (the window's progressive view) the sum of samples 0..z-1 is read from and the sum

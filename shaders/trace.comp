@@ -54,6 +54,8 @@ layout(constant_id = SPEC_STACK_DEPTH) const uint stackDepth = BVH_STACK_SIZE;
 layout(constant_id = SPEC_RECORD_PIXEL) const bool recordPixel = false;
 // -o out.pfm|out.exr: each pixel's average also goes to accumulation[] as floats.
 layout(constant_id = SPEC_FLOAT_OUTPUT) const bool floatOutput = false;
+// Headless --crop: the output image is a part of the full image (GpuFrameParams places it).
+layout(constant_id = SPEC_OUTPUT_PART) const bool outputPart = false;
 // --count-work (hidden): the hierarchy's work is counted into `status` (GpuKernelStatus).
 layout(constant_id = SPEC_COUNT_WORK) const bool countWork = false;
 uint nodeVisits = 0u;         // this invocation's, with countWork (bvh.glsl)
@@ -219,9 +221,20 @@ void main() {
     uvec2 pixel = params.dispatch.xy +
                   tileOfWorkgroup() * uvec2(WORKGROUP_SIZE_X, WORKGROUP_SIZE_Y) +
                   pixelInTile(gl_LocalInvocationID.xy);
-    if (any(greaterThanEqual(pixel, params.image.xy))) return;
-    // The --pixel kernel is dispatched with its pixel first: only that invocation records.
+    // The output image holds the full image or (outputPart: --crop) a part of it, from
+    // origin to outputEnd (GpuFrameParams); the ray is the full image's pixel's, whatever
+    // the part. The --pixel kernel is dispatched with its pixel first, wherever it is: only
+    // that invocation records.
+    uvec2 outputEnd = params.image.xy;
+    uvec2 origin = uvec2(0u);
+    if (outputPart && !recordPixel) {
+        outputEnd = uvec2(floatBitsToUint(params.background.w), floatBitsToUint(params.ambient.w));
+        uint originBits = floatBitsToUint(params.cameraOrigin.w);
+        origin = uvec2(originBits & 0xFFFFu, originBits >> 16u);
+    }
+    if (any(greaterThanEqual(pixel, outputEnd))) return;
     if (recordPixel && any(notEqual(pixel, params.dispatch.xy))) return;
+    uvec2 place = pixel - origin;
 
     // Samples first..end-1 of n. One pass (dispatch.w == 0) sums all n here; otherwise
     // (the window's progressive view, and headless frames split into sample passes) each
@@ -232,7 +245,7 @@ void main() {
     bool progressive = params.dispatch.w != 0u;
     uint first = progressive ? params.dispatch.z : 0u;
     uint end = progressive ? min(first + params.dispatch.w, samples) : samples;
-    uint slot = pixel.y * params.image.x + pixel.x;
+    uint slot = place.y * (outputEnd.x - origin.x) + place.x;
     vec3 sum = vec3(0.0);
     // The story kernel keeps its one pixel's running sum in the story, not in accumulation[],
     // which may hold the window's.
@@ -272,5 +285,5 @@ void main() {
     // floor(c * 255 + 0.5) here, stored as k / 255: the UNORM conversion then gives exactly k
     // whatever the driver's rounding (k / 255 * 255 rounds back to k for every k).
     vec3 level = floor(average * 255.0 + 0.5);
-    imageStore(outputImage, ivec2(pixel), vec4(level / 255.0, 1.0));
+    imageStore(outputImage, ivec2(place), vec4(level / 255.0, 1.0));
 }

@@ -132,6 +132,7 @@ std::string commandLine(const Options& options) {
     addSwitch("--storage-reads", options.storageReads);
     addCount("--max-storage-range", options.maxStorageRange, 0);
     addCount("--max-allocation", options.maxAllocation, 0);
+    addCount("--max-image-side", options.maxImageSide, 0);
     addSwitch("--help", options.showHelp);
     addSwitch("--version", options.showVersion);
     addSwitch("--check", options.checkOnly);

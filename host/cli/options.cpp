@@ -277,9 +277,9 @@ Options parseOptions(int argc, const char* const* argv) {
             options.fit = false;
             noteModelOnly(given, arg);
         } else if (arg == "--width") {
-            options.width = parseCount(arg, value(), 1, 16384);
+            options.width = parseCount(arg, value(), 1, kMaxImageSide);
         } else if (arg == "--height") {
-            options.height = parseCount(arg, value(), 1, 16384);
+            options.height = parseCount(arg, value(), 1, kMaxImageSide);
         } else if (arg == "--spp") {
             options.samplesPerPixel = parseCount(arg, value(), 1, 65536);
             options.samplesGiven = true;
@@ -355,6 +355,8 @@ Options parseOptions(int argc, const char* const* argv) {
             options.maxStorageRange = parseCount(arg, value(), 16, 4294967295u);
         } else if (arg == "--max-allocation") {
             options.maxAllocation = parseCount(arg, value(), 16, 4294967295u);
+        } else if (arg == "--max-image-side") {
+            options.maxImageSide = parseCount(arg, value(), 1, kMaxImageSide);
         } else if (arg == "--pixel") {
             options.pixel = parsePixel(arg, value());
             options.pixelGiven = true;

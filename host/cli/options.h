@@ -8,6 +8,7 @@
 #include "packing/bvh.h"
 #include "packing/kernel_choices.h"
 #include "scene/camera.h"
+#include "shared.h"
 
 #include <glm/glm.hpp>
 
@@ -16,6 +17,9 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+// The largest --width and --height (shaders/shared.h says why).
+inline constexpr std::uint32_t kMaxImageSide = MAX_IMAGE_SIDE;
 
 struct Options {
     std::filesystem::path scenePath;
@@ -75,10 +79,12 @@ struct Options {
     bool generalKernel = false; // --general-kernel (hidden, for tools/kernel_costs)
     bool countWork = false;     // --count-work (hidden): --bench reports the hierarchy's work
     bool storageReads = false;  // --storage-reads (hidden): the kernel's fallback read path
-    // --max-storage-range and --max-allocation BYTES (hidden, for tests): the device's
-    // maxStorageBufferRange and maxMemoryAllocationSize lowered to these (gpu/limit_overrides.h).
+    // --max-storage-range and --max-allocation BYTES, --max-image-side PIXELS (hidden, for
+    // tests): the device's maxStorageBufferRange, maxMemoryAllocationSize and
+    // maxImageDimension2D lowered to these (gpu/limit_overrides.h).
     std::uint32_t maxStorageRange = 0;
     std::uint32_t maxAllocation = 0;
+    std::uint32_t maxImageSide = 0;
     // --compare FILE: the window at FILE's size compares the render with FILE (an image of the
     // scene made by another tracer): keys show the render, FILE or the difference, I prints
     // a pixel's diagnosis (docs/compare.md).

@@ -25,6 +25,8 @@ RenderSettings renderSettingsFrom(const Options& options) {
     settings.generalKernel = options.generalKernel;
     settings.countWork = options.countWork;
     settings.storageReads = options.storageReads;
+    if (options.cropGiven)
+        settings.crop = {options.crop.x, options.crop.y, options.crop.z, options.crop.w};
     return settings;
 }
 
@@ -32,7 +34,17 @@ void openHeadlessDevice(Context& context, const Options& options) {
     createInstance(context, {}, options.validate);
     createDevice(context, options.device, VK_NULL_HANDLE,
                  options.kernel.precision == Precision::Fp64);
-    checkImageFits(imageLimitsOf(context), options.width, options.height, true);
+    // Only the crop is made (RenderSettings::crop): a poster's part must fit, not the poster.
+    if (options.cropGiven) {
+        checkImageFits(imageLimitsOf(context), options.crop.z, options.crop.w, true);
+        return;
+    }
+    try {
+        checkImageFits(imageLimitsOf(context), options.width, options.height, true);
+    } catch (const std::runtime_error& error) {
+        throw std::runtime_error(std::string(error.what()) +
+                                 "; render it in --crop parts that fit, which tools/stitch joins");
+    }
 }
 
 bool seesModelWithItsCamera(const Options& options, const Scene& scene) {

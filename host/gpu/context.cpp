@@ -239,6 +239,9 @@ void chooseDevice(Context& context, const std::string& deviceRequest, VkSurfaceK
     if (lowered.maxMemoryAllocationSize &&
         lowered.maxMemoryAllocationSize < context.maxMemoryAllocationSize)
         context.maxMemoryAllocationSize = lowered.maxMemoryAllocationSize;
+    std::uint32_t& imageSide = context.properties.limits.maxImageDimension2D;
+    if (lowered.maxImageDimension2D && lowered.maxImageDimension2D < imageSide)
+        imageSide = lowered.maxImageDimension2D;
     context.queueFamily = chosen.queueFamily;
     vkGetPhysicalDeviceMemoryProperties(chosen.device, &context.memoryProperties);
 }

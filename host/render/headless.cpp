@@ -49,12 +49,6 @@ void recordFloatCopyToHost(VkCommandBuffer commands, const Buffer& accumulation,
                          &toHost, 0, nullptr, 0, nullptr);
 }
 
-// The part of the image that is traced and read: the crop, or all of it.
-TraceRegion tracedArea(const HeadlessTarget& target, const Renderer& renderer) {
-    if (target.crop.width > 0) return target.crop;
-    return {0, 0, renderer.outputImage.width, renderer.outputImage.height};
-}
-
 } // namespace
 
 void recordCopyToHost(VkCommandBuffer commands, const Image& image, const Buffer& hostBuffer) {
@@ -110,7 +104,7 @@ void createHeadlessTarget(HeadlessTarget& target, const Context& context, const 
 // region's work, so nothing else waits behind a long frame.
 FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context, Renderer& renderer,
                                 ProgressMode progressMode) {
-    const TraceRegion area = tracedArea(target, renderer);
+    const TraceRegion area = outputRegion(renderer.settings); // the crop, or all of the image
     Progress progress = startProgress(progressMode, area.width, area.height);
     const double totalPixels = double(area.width) * area.height;
     double pixelsDone = 0;
@@ -179,38 +173,20 @@ FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context, 
 }
 
 Image8 readHeadlessImage(const HeadlessTarget& target, const Renderer& renderer) {
-    Image8 whole = imageFromHostCopy(renderer.outputImage, target.readbackBuffer);
-    const TraceRegion area = tracedArea(target, renderer);
-    if (area.width == renderer.outputImage.width && area.height == renderer.outputImage.height)
-        return whole;
-    Image8 part;
-    part.width = int(area.width);
-    part.height = int(area.height);
-    part.rgba.resize(std::size_t(area.width) * area.height * 4);
-    for (std::uint32_t row = 0; row < area.height; ++row)
-        std::memcpy(&part.rgba[std::size_t(row) * area.width * 4],
-                    &whole.rgba[(std::size_t(area.y + row) * whole.width + area.x) * 4],
-                    std::size_t(area.width) * 4);
-    return part;
+    return imageFromHostCopy(renderer.outputImage, target.readbackBuffer);
 }
 
 ImageF readHeadlessFloatImage(const HeadlessTarget& target, const Renderer& renderer) {
     if (!target.floatReadbackBuffer.buffer)
         throw std::logic_error("readHeadlessFloatImage: the renderer has no float output");
-    const TraceRegion area = tracedArea(target, renderer);
     ImageF image;
-    image.width = static_cast<int>(area.width);
-    image.height = static_cast<int>(area.height);
-    image.rgb.resize(std::size_t(area.width) * area.height * 3);
+    image.width = static_cast<int>(renderer.outputImage.width);
+    image.height = static_cast<int>(renderer.outputImage.height);
+    image.rgb.resize(std::size_t(image.width) * image.height * 3);
     const auto* averages = static_cast<const float*>(target.floatReadbackBuffer.mapped);
-    for (std::uint32_t row = 0; row < area.height; ++row)
-        for (std::uint32_t column = 0; column < area.width; ++column) {
-            const std::size_t from =
-                std::size_t(area.y + row) * renderer.outputImage.width + area.x + column;
-            const std::size_t to = std::size_t(row) * area.width + column;
-            for (std::size_t c = 0; c < 3; ++c)
-                image.rgb[to * 3 + c] = averages[from * 4 + c];
-        }
+    for (std::size_t pixel = 0; pixel < std::size_t(image.width) * image.height; ++pixel)
+        for (std::size_t c = 0; c < 3; ++c)
+            image.rgb[pixel * 3 + c] = averages[pixel * 4 + c];
     return image;
 }
 

@@ -16,10 +16,6 @@ struct HeadlessTarget {
     VkCommandBuffer commands = VK_NULL_HANDLE;
     VkFence submissionDone = VK_NULL_HANDLE;
     RegionPlanner planner; // what each submission traces; learns across frames
-    // --crop: the only part of the image traced and read back (the read images are its
-    // size); each pixel is still computed from its full-image coordinates, so it equals the
-    // full render's. Width 0: the whole image.
-    TraceRegion crop{};
 };
 
 // What one frame cost.
@@ -48,7 +44,8 @@ void createHeadlessTarget(HeadlessTarget& target, const Context& context, const 
 FrameTiming renderHeadlessFrame(HeadlessTarget& target, const Context& context, Renderer& renderer,
                                 ProgressMode progress = ProgressMode::Off);
 
-// The last rendered frame as an image (the crop only, with one).
+// The last rendered frame as an image: the output image, which is the crop with one
+// (RenderSettings::crop).
 Image8 readHeadlessImage(const HeadlessTarget& target, const Renderer& renderer);
 
 // The last rendered frame's averages before the 8-bit rounding (renderer made with

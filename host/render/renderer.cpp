@@ -103,13 +103,17 @@ gpu::GpuFrameParams frameParams(const Renderer& renderer, std::uint32_t dispatch
     const double tanHalfFov = std::tan(settings.fovDegrees * 0.5 * M_PI / 180.0);
     const double aspect = double(settings.width) / double(settings.height);
     gpu::GpuFrameParams params{};
-    params.background = glm::vec4(settings.background, 0.0f);
-    params.ambient = renderer.scene.ambient;
+    const TraceRegion output = outputRegion(settings);
+    params.background =
+        glm::vec4(settings.background, std::bit_cast<float>(output.x + output.width));
+    params.ambient = glm::vec4(glm::vec3(renderer.scene.ambient),
+                               std::bit_cast<float>(output.y + output.height));
     params.camera = glm::vec4(float(aspect * tanHalfFov), float(tanHalfFov),
                               std::bit_cast<float>(rowStride(workgroupRows)),
                               std::bit_cast<float>(std::uint32_t(LOOP_PROBE_ITERATIONS)));
     const glm::dquat orientation = cameraOrientation(settings.camera);
-    params.cameraOrigin = glm::vec4(glm::vec3(settings.camera.position), 0.0f);
+    params.cameraOrigin = glm::vec4(glm::vec3(settings.camera.position),
+                                    std::bit_cast<float>(output.x | output.y << 16));
     params.cameraOrientation = glm::vec4(float(orientation.x), float(orientation.y),
                                          float(orientation.z), float(orientation.w));
     params.image = glm::uvec4(settings.width, settings.height,
@@ -167,10 +171,75 @@ TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderS
             std::clamp<std::uint32_t>(packed.hierarchy.depth, 1, BVH_STACK_SIZE);
     specialization.texelReads = !settings.storageReads;
     specialization.floatOutput = settings.floatOutput;
+    specialization.outputPart = settings.crop.width > 0;
     specialization.countWork = settings.countWork;
     applyKernelChoices(specialization, settings.kernel);
     return specialization;
 }
+
+namespace {
+
+// A running sum per pixel is needed when the samples are added over several dispatches:
+// the window's progressive view, or a headless frame split into passes; float output keeps
+// its averages there too.
+bool needsPerPixelSum(const Renderer& renderer) {
+    const RenderSettings& settings = renderer.settings;
+    return settings.progressive || settings.floatOutput ||
+           (renderer.samplesPerPass != 0 && renderer.samplesPerPass < settings.samplesPerPixel);
+}
+
+// The accumulation buffer at the output image's size (a vec4 per pixel when the renderer
+// needs a running sum, else one), bound to the kernel.
+void createAccumulation(Renderer& renderer, const Context& context) {
+    // Its contents never matter: the first dispatch of a progressive run or of a split frame
+    // writes before it reads, float output writes every pixel, and other one-pass dispatches
+    // never touch it.
+    destroyBuffer(context, renderer.accumulation);
+    const bool perPixel = needsPerPixelSum(renderer);
+    const VkDeviceSize accumulationBytes = perPixel
+                                               ? VkDeviceSize(renderer.outputImage.width) *
+                                                     renderer.outputImage.height * sizeof(glm::vec4)
+                                               : sizeof(glm::vec4);
+    const VkDeviceSize storageRange = context.properties.limits.maxStorageBufferRange;
+    if (perPixel && accumulationBytes > storageRange)
+        throw std::runtime_error(
+            "a " + std::to_string(renderer.outputImage.width) + "x" +
+            std::to_string(renderer.outputImage.height) +
+            (renderer.settings.floatOutput ? " float image" : " image traced in sample passes") +
+            " needs " + std::to_string(accumulationBytes >> 20) + " MiB, more than this device's " +
+            "maxStorageBufferRange of " + std::to_string(storageRange >> 20) + " MiB (" +
+            context.properties.deviceName + "); " +
+            (renderer.settings.floatOutput ? "write a PNG or a smaller image"
+                                           : "render a smaller image, or in --crop regions"));
+    const std::vector<std::uint8_t> zeros(accumulationBytes, 0);
+    // TRANSFER_SRC: headless float output copies it to a host buffer.
+    renderer.accumulation =
+        createDeviceBuffer(context, zeros.data(), accumulationBytes,
+                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    VkDescriptorBufferInfo bufferInfo{renderer.accumulation.buffer, 0, VK_WHOLE_SIZE};
+    VkWriteDescriptorSet bufferWrite = descriptorWrite(renderer, BINDING_ACCUMULATION);
+    bufferWrite.pBufferInfo = &bufferInfo;
+    vkUpdateDescriptorSets(context.device, 1, &bufferWrite, 0, nullptr);
+}
+
+// The output image, width x height, bound to the kernel, and its accumulation buffer.
+void createOutput(Renderer& renderer, const Context& context, std::uint32_t width,
+                  std::uint32_t height) {
+    VK_CHECK(vkDeviceWaitIdle(context.device));
+    destroyImage(context, renderer.outputImage);
+    renderer.outputImage =
+        createImage(context, width, height, VK_FORMAT_R8G8B8A8_UNORM,
+                    VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+
+    VkDescriptorImageInfo imageInfo{VK_NULL_HANDLE, renderer.outputImage.view,
+                                    VK_IMAGE_LAYOUT_GENERAL};
+    VkWriteDescriptorSet imageWrite = descriptorWrite(renderer, BINDING_OUTPUT_IMAGE);
+    imageWrite.pImageInfo = &imageInfo;
+    vkUpdateDescriptorSets(context.device, 1, &imageWrite, 0, nullptr);
+
+    createAccumulation(renderer, context);
+}
+} // namespace
 
 void createRenderer(Renderer& renderer, const Context& context, const Scene& scene,
                     const RenderSettings& settings, KernelCache* kernels) {
@@ -226,73 +295,24 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
         queryInfo.queryCount = 2;
         VK_CHECK(vkCreateQueryPool(context.device, &queryInfo, nullptr, &renderer.timestampPool));
     }
-    resizeOutput(renderer, context, settings.width, settings.height);
+    const TraceRegion output = outputRegion(settings);
+    if (output.x >= MAX_IMAGE_SIDE || output.y >= MAX_IMAGE_SIDE)
+        throw std::invalid_argument("a region's origin must lie within " +
+                                    std::to_string(MAX_IMAGE_SIDE) + " pixels (GpuFrameParams)");
+    createOutput(renderer, context, output.width, output.height);
 }
 
-namespace {
-
-// A running sum per pixel is needed when the samples are added over several dispatches:
-// the window's progressive view, or a headless frame split into passes; float output keeps
-// its averages there too.
-bool needsPerPixelSum(const Renderer& renderer) {
-    const RenderSettings& settings = renderer.settings;
-    return settings.progressive || settings.floatOutput ||
-           (renderer.samplesPerPass != 0 && renderer.samplesPerPass < settings.samplesPerPixel);
+TraceRegion outputRegion(const RenderSettings& settings) {
+    if (settings.crop.width > 0) return settings.crop;
+    return {0, 0, settings.width, settings.height};
 }
-
-// The accumulation buffer at the output image's size (a vec4 per pixel when the renderer
-// needs a running sum, else one), bound to the kernel.
-void createAccumulation(Renderer& renderer, const Context& context) {
-    // Its contents never matter: the first dispatch of a progressive run or of a split frame
-    // writes before it reads, float output writes every pixel, and other one-pass dispatches
-    // never touch it.
-    destroyBuffer(context, renderer.accumulation);
-    const bool perPixel = needsPerPixelSum(renderer);
-    const VkDeviceSize accumulationBytes = perPixel
-                                               ? VkDeviceSize(renderer.outputImage.width) *
-                                                     renderer.outputImage.height * sizeof(glm::vec4)
-                                               : sizeof(glm::vec4);
-    const VkDeviceSize storageRange = context.properties.limits.maxStorageBufferRange;
-    if (perPixel && accumulationBytes > storageRange)
-        throw std::runtime_error(
-            "a " + std::to_string(renderer.outputImage.width) + "x" +
-            std::to_string(renderer.outputImage.height) +
-            (renderer.settings.floatOutput ? " float image" : " image traced in sample passes") +
-            " needs " + std::to_string(accumulationBytes >> 20) + " MiB, more than this device's " +
-            "maxStorageBufferRange of " + std::to_string(storageRange >> 20) + " MiB (" +
-            context.properties.deviceName + "); " +
-            (renderer.settings.floatOutput ? "write a PNG or a smaller image"
-                                           : "render a smaller image, or in --crop regions"));
-    const std::vector<std::uint8_t> zeros(accumulationBytes, 0);
-    // TRANSFER_SRC: headless float output copies it to a host buffer.
-    renderer.accumulation =
-        createDeviceBuffer(context, zeros.data(), accumulationBytes,
-                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-    VkDescriptorBufferInfo bufferInfo{renderer.accumulation.buffer, 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet bufferWrite = descriptorWrite(renderer, BINDING_ACCUMULATION);
-    bufferWrite.pBufferInfo = &bufferInfo;
-    vkUpdateDescriptorSets(context.device, 1, &bufferWrite, 0, nullptr);
-}
-
-} // namespace
 
 void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t width,
                   std::uint32_t height) {
-    VK_CHECK(vkDeviceWaitIdle(context.device));
-    destroyImage(context, renderer.outputImage);
     renderer.settings.width = width;
     renderer.settings.height = height;
-    renderer.outputImage =
-        createImage(context, width, height, VK_FORMAT_R8G8B8A8_UNORM,
-                    VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
-
-    VkDescriptorImageInfo imageInfo{VK_NULL_HANDLE, renderer.outputImage.view,
-                                    VK_IMAGE_LAYOUT_GENERAL};
-    VkWriteDescriptorSet imageWrite = descriptorWrite(renderer, BINDING_OUTPUT_IMAGE);
-    imageWrite.pImageInfo = &imageInfo;
-    vkUpdateDescriptorSets(context.device, 1, &imageWrite, 0, nullptr);
-
-    createAccumulation(renderer, context);
+    renderer.settings.crop = {};
+    createOutput(renderer, context, width, height);
 }
 
 void setCamera(Renderer& renderer, const CameraPose& camera) {

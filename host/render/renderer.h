@@ -49,6 +49,10 @@ struct RenderSettings {
     // --terminator: shadow rays leave smooth-shaded triangles from the hit point moved as
     // Hanika's shadow terminator fix does (shaders/shade.glsl); on for OBJ models by default.
     bool terminatorFix = false;
+    // Headless --crop: the part of the width x height image that the output image holds and
+    // the kernel traces, each pixel as in the full image; width 0: all of it. Only the part
+    // must fit the device, so a poster larger than its image limit renders in such parts.
+    TraceRegion crop{};
 };
 
 // The samples one dispatch adds (GpuFrameParams.dispatch.zw): count 0 traces all of
@@ -113,7 +117,10 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
 // settings.generalKernel the scene's content is ignored (everything on); the rest stays.
 TraceSpecialization traceSpecialization(const PackedScene& packed, const RenderSettings& settings);
 
-// Recreates the output image at a new size (the window was resized).
+// The part of the full image the output image holds: settings.crop, or all of it.
+TraceRegion outputRegion(const RenderSettings& settings);
+
+// Recreates the output image at a new size (the window was resized), all of the image.
 void resizeOutput(Renderer& renderer, const Context& context, std::uint32_t width,
                   std::uint32_t height);
 

@@ -19,7 +19,7 @@
 #include <string>
 
 // Hashed as bytes for the pipeline cache's key: no padding may hide in it.
-static_assert(sizeof(TraceSpecialization) == 20 * sizeof(std::uint32_t));
+static_assert(sizeof(TraceSpecialization) == 21 * sizeof(std::uint32_t));
 
 VkDescriptorType bindingDescriptorType(std::uint32_t binding) {
     return kBindings[binding].type;
@@ -73,6 +73,7 @@ std::vector<VkSpecializationMapEntry> specializationMapEntries() {
             {SPEC_BAKED_LIGHT_COUNT, offsetof(S, bakedLightCount), sizeof(std::uint32_t)},
             {SPEC_RECORD_PIXEL, offsetof(S, recordPixel), sizeof(VkBool32)},
             {SPEC_FLOAT_OUTPUT, offsetof(S, floatOutput), sizeof(VkBool32)},
+            {SPEC_OUTPUT_PART, offsetof(S, outputPart), sizeof(VkBool32)},
             {SPEC_STACK_DEPTH, offsetof(S, stackDepth), sizeof(std::uint32_t)},
             {SPEC_COUNT_WORK, offsetof(S, countWork), sizeof(VkBool32)}};
 }

@@ -37,6 +37,7 @@ struct TraceSpecialization {
     // The recording kernel of --pixel (host/render/pixel_story.h): one pixel, into the story.
     VkBool32 recordPixel = VK_FALSE;
     VkBool32 floatOutput = VK_FALSE; // averages also to BINDING_ACCUMULATION (-o .pfm/.exr)
+    VkBool32 outputPart = VK_FALSE;  // the output image is a --crop part (SPEC_OUTPUT_PART)
     // The traversal stack's entries: the hierarchy's depth (shaders/bvh.glsl, traverseBvh).
     std::uint32_t stackDepth = BVH_STACK_SIZE;
     // --count-work (hidden): the hierarchy's work counted into GpuKernelStatus.

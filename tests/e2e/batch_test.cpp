@@ -2,10 +2,14 @@
 // scene's own render byte for byte; a scene that does not load is reported and skipped;
 // turntable frame 0 and a camera-path line spelling the default camera give the plain
 // render; camera-path errors word for word; --crop regions stitched give the full image
-// for every sampler; the usage errors of patterns and regions word for word.
+// for every sampler, and a poster beyond the device's image limit renders so; the usage errors of
+// patterns and regions word for word.
+#include "base/float_image.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 namespace {
 
@@ -213,6 +217,57 @@ TEST(Regions, CropsStitchedAreTheFullImageByteForByte) {
         ASSERT_EQ(stitch.exitCode, 0) << stitch.err;
         expectSameFile(full, dir / ("stitched-" + std::to_string(s) + ".png"));
     }
+}
+
+// A poster larger than the device's image limit (lowered to 20 pixels a side by the hidden
+// --max-image-side) is refused whole, with a pointer to --crop, and renders in parts of at
+// most 20 x 20 whose stitch is the whole image rendered under the real limit, byte for byte;
+// a part's float output is the whole float image's region, bit for bit (the kernel writes
+// a crop-sized image from its place in the full image).
+TEST(Regions, APosterBeyondTheImageLimitRendersInPartsThatFit) {
+    const fs::path dir = freshOutputDir("batch/poster");
+    const std::vector<std::string> sampling = {"--spp", "3", "--sampler", "stratified"};
+    renderAlone(kShowcase, dir / "whole.png", sampling);
+    renderAlone(kShowcase, dir / "whole.pfm", sampling);
+    std::vector<std::string> lowered = sampling;
+    lowered.insert(lowered.end(), {"--max-image-side", "20"});
+    const ProcessResult refused =
+        runRaytracer(small({kShowcase.string(), "-o", (dir / "refused.png").string(), "--spp", "3",
+                            "--max-image-side", "20"}));
+    EXPECT_EQ(refused.exitCode, 1);
+    EXPECT_NE(refused.err.find("error: a 48x36 image exceeds this device's maxImageDimension2D "
+                               "of 20 (llvmpipe"),
+              std::string::npos)
+        << refused.err;
+    EXPECT_NE(refused.err.find("render it in --crop parts that fit, which tools/stitch joins"),
+              std::string::npos);
+    EXPECT_FALSE(fs::exists(dir / "refused.png"));
+
+    std::vector<std::string> parts = {"-o", (dir / "stitched.png").string()};
+    const ImageF whole = readPfm(dir / "whole.pfm");
+    for (const std::uint32_t y : {0u, 20u})
+        for (const std::uint32_t x : {0u, 20u, 40u}) {
+            const std::uint32_t width = std::min(20u, 48 - x), height = std::min(20u, 36 - y);
+            const std::string crop = std::to_string(x) + "," + std::to_string(y) + "," +
+                                     std::to_string(width) + "," + std::to_string(height);
+            const std::string place = std::to_string(x) + "-" + std::to_string(y);
+            std::vector<std::string> more = lowered;
+            more.insert(more.end(), {"--crop", crop});
+            renderAlone(kShowcase, dir / ("part-" + place + ".png"), more);
+            renderAlone(kShowcase, dir / ("part-" + place + ".pfm"), more);
+            parts.push_back((dir / ("part-" + place + ".png")).string());
+            const ImageF part = readPfm(dir / ("part-" + place + ".pfm"));
+            ASSERT_EQ(part.width, int(width));
+            ASSERT_EQ(part.height, int(height));
+            for (std::uint32_t row = 0; row < height; ++row)
+                for (std::uint32_t column = 0; column < width * 3; ++column)
+                    ASSERT_EQ(part.rgb[row * width * 3 + column],
+                              whole.rgb[(y + row) * 48 * 3 + x * 3 + column])
+                        << crop << " row " << row << " value " << column;
+        }
+    const ProcessResult stitch = runProgram(STITCH_BINARY, parts);
+    ASSERT_EQ(stitch.exitCode, 0) << stitch.err;
+    expectSameFile(dir / "whole.png", dir / "stitched.png");
 }
 
 TEST(Regions, StitchRefusesGapsAndOverlaps) {

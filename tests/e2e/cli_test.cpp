@@ -70,9 +70,9 @@ TEST(CommandLine, MissingSceneArgumentIsAUsageError) {
 
 TEST(CommandLine, BadOptionValuesAreUsageErrors) {
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
-        {{"x.scene", "--width", "0"}, "--width expects a whole number from 1 to 16384, got '0'"},
+        {{"x.scene", "--width", "0"}, "--width expects a whole number from 1 to 65536, got '0'"},
         {{"x.scene", "--height", "-5"},
-         "--height expects a whole number from 1 to 16384, got '-5'"},
+         "--height expects a whole number from 1 to 65536, got '-5'"},
         {{"x.scene", "--spp", "abc"}, "--spp expects a whole number from 1 to 65536, got 'abc'"},
         {{"x.scene", "--depth", "65"}, "--depth expects a whole number from 0 to 64, got '65'"},
         {{"x.scene", "--fov", "180"}, "--fov expects degrees strictly between 0 and 180"},
@@ -113,7 +113,7 @@ TEST(CommandLine, UsageErrorIsTheErrorAndOneLineToTheHelp) {
         {{"x.scene", "--frobnicate"}, "error: unknown option '--frobnicate'\n"},
         {{"x.scene", "--validate=yes"}, "error: --validate takes no value, got '--validate=yes'\n"},
         {{"x.scene", "--width=0"},
-         "error: --width expects a whole number from 1 to 16384, got '0'\n"},
+         "error: --width expects a whole number from 1 to 65536, got '0'\n"},
         {{}, "error: no scene file given\n"},
     };
     for (const auto& [args, message] : cases) {

@@ -136,16 +136,16 @@ TEST(Limits, ExtremeImageShapesRender) {
 
 TEST(Limits, AbsurdSizesSamplesAndDepthsAreUsageErrors) {
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
-        {{"x.scene", "--width", "16385"},
-         "--width expects a whole number from 1 to 16384, got '16385'"},
-        {{"x.scene", "--height", "0"}, "--height expects a whole number from 1 to 16384, got '0'"},
+        {{"x.scene", "--width", "65537"},
+         "--width expects a whole number from 1 to 65536, got '65537'"},
+        {{"x.scene", "--height", "0"}, "--height expects a whole number from 1 to 65536, got '0'"},
         {{"x.scene", "--width", "99999999999999999999"},
-         "--width expects a whole number from 1 to 16384, got '99999999999999999999'"},
+         "--width expects a whole number from 1 to 65536, got '99999999999999999999'"},
         {{"x.scene", "--width", "4294967296"},
-         "--width expects a whole number from 1 to 16384, got '4294967296'"},
+         "--width expects a whole number from 1 to 65536, got '4294967296'"},
         {{"x.scene", "--width", "64.5"},
-         "--width expects a whole number from 1 to 16384, got '64.5'"},
-        {{"x.scene", "--width", ""}, "--width expects a whole number from 1 to 16384, got ''"},
+         "--width expects a whole number from 1 to 65536, got '64.5'"},
+        {{"x.scene", "--width", ""}, "--width expects a whole number from 1 to 65536, got ''"},
         {{"x.scene", "--spp", "0"}, "--spp expects a whole number from 1 to 65536, got '0'"},
         {{"x.scene", "--spp", "65537"},
          "--spp expects a whole number from 1 to 65536, got '65537'"},

@@ -291,7 +291,7 @@ TEST(CommandLine, OptionEqualsValueIsTheSameAsTwoWords) {
     EXPECT_EQ(parse({"x.scene", "--device=a=b"}).device, "a=b");
     // The value after '=' is checked as the separate word is.
     EXPECT_EQ(usageErrorOf({"x.scene", "--width="}),
-              "--width expects a whole number from 1 to 16384, got ''");
+              "--width expects a whole number from 1 to 65536, got ''");
     EXPECT_EQ(usageErrorOf({"x.scene", "--offset=far"}),
               "--offset expects fixed, scaled or error-bound, got 'far'");
 }

@@ -77,7 +77,7 @@ run_inside_xvfb() {
     else fail "R did not reload (log $log)"; fi
 
     # Edit the kernel: invert the output.
-    local store='imageStore(outputImage, ivec2(pixel), vec4(level / 255.0, 1.0));'
+    local store='imageStore(outputImage, ivec2(place), vec4(level / 255.0, 1.0));'
     if grep -qF "$store" shaders/trace.comp; then
         sed -i 's|vec4(level / 255.0, 1.0));|vec4(1.0 - level / 255.0, 1.0));|' shaders/trace.comp
         headless inverted.png $WIDTH $HEIGHT
