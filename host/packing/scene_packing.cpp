@@ -1,6 +1,8 @@
 #include "packing/scene_packing.h"
 
 #include "base/deduplicator.h"
+#include "base/ordered_dedup.h"
+#include "base/parallel.h"
 #include "base/phase_progress.h"
 #include "base/startup_phases.h"
 #include "packing/flat_patches.h"
@@ -115,53 +117,44 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
         if (fp64) packed.spheres64.push_back(glm::dvec4(sphere.center, sphere.radius));
     }
 
-    // The scene file's triangles, then each mesh's (scene_triangles.h's numbering). A closed
-    // mesh has about half as many vertices as triangles.
+    // The scene file's triangles, then each mesh's (scene_triangles.h's numbering). Every
+    // corner that may make a vertex is a candidate, in order; the candidates are then
+    // deduplicated on all threads (orderedDedup: the indices of Deduplicator called on them
+    // in turn), as vertices (whole) and as corners (their positions alone, whatever their
+    // normals and materials: what the flat patches join triangles through).
     const std::size_t triangles = triangleCount(scene);
-    // As many vertices as the scene can make when no vertex has two materials: each mesh's,
-    // and three for each of the scene file's triangles. Reserved (address space: a page
-    // costs only once written), so that the arrays are not copied as they grow.
-    std::size_t vertexBound = 3 * scene.triangles.size();
+    std::size_t candidateBound = 3 * scene.triangles.size();
     for (const Mesh& mesh : scene.meshes)
-        vertexBound += mesh.positions.size();
-    std::vector<PackedVertex> vertices;
-    vertices.reserve(vertexBound);
-    // The corners by position alone, whatever their normals and materials: what the flat
-    // patches join triangles through.
-    std::vector<glm::dvec4> corners;
-    corners.reserve(vertexBound);
-    // The look-up tables live only while the triangles are packed.
-    auto vertexIndices = std::make_unique<Deduplicator<PackedVertex>>(vertices, triangles / 2);
-    auto cornerIndices = std::make_unique<Deduplicator<glm::dvec4>>(corners, triangles / 2);
+        candidateBound += mesh.positions.size();
+    std::vector<PackedVertex> candidates;
+    candidates.reserve(candidateBound); // address space: a page costs only once written
+    // Until the deduplication, a triangle's x, y, z and a corner are candidates' numbers.
     std::vector<std::uint32_t> cornersOfTriangles;
     cornersOfTriangles.reserve(3 * triangles);
     packed.triangles.reserve(triangles);
-    auto packCorner = [&](const Vertex& vertex, std::int64_t texture, glm::dvec2 texcoord) {
-        const glm::dvec3& position = vertex.position;
+    auto candidate = [&](const Vertex& vertex, std::int64_t texture, glm::dvec2 texcoord) {
         PackedVertex packedVertex{};
-        packedVertex.position = toVec4(position);
+        packedVertex.position = toVec4(vertex.position);
         packedVertex.normal = toVec4(vertex.normal);
         packedVertex.material = materialIndex(vertex.material, texture);
         if (textured) packedVertex.texcoord = glm::vec2(texcoord);
-        if (fp64) packedVertex.exactPosition = glm::dvec4(position, 0.0);
-        // The position the GPU computes with: rounded to float in fp32.
-        const glm::dvec3 corner = fp64 ? position : glm::dvec3(glm::vec3(position));
-        cornersOfTriangles.push_back(cornerIndices->indexOf(glm::dvec4(corner, 0.0)));
-        return vertexIndices->indexOf(packedVertex);
+        if (fp64) packedVertex.exactPosition = glm::dvec4(vertex.position, 0.0);
+        candidates.push_back(packedVertex);
+        return std::uint32_t(candidates.size() - 1);
     };
     for (const Triangle& triangle : scene.triangles) {
         glm::uvec4 packedTriangle(0u);
         for (int k = 0; k < 3; ++k) {
-            packedTriangle[k] = packCorner(triangle.vertices[k], -1, glm::dvec2(0.0));
+            packedTriangle[k] = candidate(triangle.vertices[k], -1, glm::dvec2(0.0));
+            cornersOfTriangles.push_back(packedTriangle[k]);
         }
         packed.triangles.push_back(packedTriangle);
     }
     // A mesh's corner packs the same as any earlier corner of its vertex whose triangle has
-    // the same material: what that one got is used again, rather than three look-ups a
-    // triangle in tables too large for the cache. The indices are those of packing each.
+    // the same material: that one's candidate stands for it, rather than one a corner.
     struct PackedCorner {
         std::uint32_t material = UINT32_MAX; // the mesh's: none yet
-        std::uint32_t vertex = 0, corner = 0;
+        std::uint32_t candidate = 0;
     };
     std::vector<PackedCorner> packedCorners;
     PhaseProgress progress("Packing the scene", triangles);
@@ -176,29 +169,53 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
                 const std::uint32_t v = mesh.triangles[t][k];
                 PackedCorner& done = packedCorners[v];
                 if (done.material != mesh.triangleMaterials[t]) {
-                    done.vertex = packCorner(
+                    done.candidate = candidate(
                         Vertex{mesh.positions[v], mesh.normals[v], cornerMaterial(mesh, t, v)},
                         texture ? std::int64_t(*texture) : -1, vertexTexcoord(mesh, v));
-                    done.corner = cornersOfTriangles.back();
                     done.material = mesh.triangleMaterials[t];
-                } else {
-                    cornersOfTriangles.push_back(done.corner);
                 }
-                packedTriangle[k] = done.vertex;
+                packedTriangle[k] = done.candidate;
+                cornersOfTriangles.push_back(done.candidate);
             }
             packed.triangles.push_back(packedTriangle);
         }
     }
-    vertexIndices.reset();
-    cornerIndices.reset();
     packedCorners = {};
-    std::vector<glm::dvec3> cornerPositions(corners.begin(), corners.end());
-    corners = {};
+    // The position the GPU computes with: rounded to float in fp32.
+    auto cornerOf = [&](std::size_t c) {
+        const PackedVertex& vertex = candidates[c];
+        return fp64 ? glm::dvec4(glm::dvec3(vertex.exactPosition), 0.0)
+                    : glm::dvec4(glm::dvec3(glm::vec3(vertex.position)), 0.0);
+    };
+    OrderedDedup cornerIndices = orderedDedup<glm::dvec4>(candidates.size(), cornerOf);
+    std::vector<glm::dvec3> cornerPositions(cornerIndices.firstOf.size());
+    const std::vector<IndexRange> blocks = splitRange(cornersOfTriangles.size(), 1 << 16);
+    parallelFor(blocks.size(), [&](std::size_t b) {
+        for (std::size_t k = blocks[b].begin; k < blocks[b].end; ++k)
+            cornersOfTriangles[k] = cornerIndices.indexOf[cornersOfTriangles[k]];
+    });
+    for (std::size_t k = 0; k < cornerPositions.size(); ++k)
+        cornerPositions[k] = glm::dvec3(cornerOf(cornerIndices.firstOf[k]));
+    cornerIndices = {};
     const std::vector<std::uint32_t> patches = flatPatches(cornerPositions, cornersOfTriangles);
     cornerPositions = {};
     cornersOfTriangles = {};
-    for (std::size_t t = 0; t < packed.triangles.size(); ++t)
-        packed.triangles[t].w = patches[t];
+    OrderedDedup vertexIndices =
+        orderedDedup<PackedVertex>(candidates.size(), [&](std::size_t c) { return candidates[c]; });
+    const std::vector<IndexRange> triangleBlocks = splitRange(packed.triangles.size(), 1 << 16);
+    parallelFor(triangleBlocks.size(), [&](std::size_t b) {
+        for (std::size_t t = triangleBlocks[b].begin; t < triangleBlocks[b].end; ++t) {
+            glm::uvec4& triangle = packed.triangles[t];
+            triangle =
+                glm::uvec4(vertexIndices.indexOf[triangle.x], vertexIndices.indexOf[triangle.y],
+                           vertexIndices.indexOf[triangle.z], patches[t]);
+        }
+    });
+    std::vector<PackedVertex> vertices(vertexIndices.firstOf.size());
+    for (std::size_t k = 0; k < vertices.size(); ++k)
+        vertices[k] = candidates[vertexIndices.firstOf[k]];
+    vertexIndices = {};
+    candidates = {};
     packed.vertexPositions.reserve(vertices.size());
     packed.vertexNormals.reserve(3 * vertices.size());
     // 28 bytes a vertex: the material index rides in the position's unused w, and the

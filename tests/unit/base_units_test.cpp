@@ -1,6 +1,8 @@
 // The small helpers of host/base/ that every report and every thread goes through: JSON
-// text (base/json.h) and the thread policy and parallel loops (base/parallel.h).
+// text (base/json.h), the thread policy and parallel loops (base/parallel.h), and the
+// deduplication on all threads (base/ordered_dedup.h).
 #include "base/json.h"
+#include "base/ordered_dedup.h"
 #include "base/parallel.h"
 
 #include <gtest/gtest.h>
@@ -9,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <random>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -99,4 +102,35 @@ TEST(Parallel, TheLowestFailingIndexIsRethrownAfterEveryThreadStopped) {
             EXPECT_STREQ(error.what(), "index 7") << threads << " threads";
         }
     }
+}
+
+// orderedDedup gives every value the index Deduplicator gives it called on the values in
+// turn, for any thread count and any share of repeats, across shards and blocks.
+TEST(OrderedDedup, TheIndicesOfDeduplicatorInTurn) {
+    struct Value {
+        std::uint32_t a, b;
+    };
+    for (const std::uint32_t distinct : {1u, 7u, 1000u, 200000u})
+        for (const unsigned threads : {1u, 2u, 5u}) {
+            std::mt19937 random(distinct);
+            std::vector<Value> sequence(100000);
+            for (Value& value : sequence)
+                value = {std::uint32_t(random() % distinct), 42};
+            std::vector<Value> expectedValues;
+            Deduplicator<Value> one(expectedValues, 16);
+            std::vector<std::uint32_t> expected;
+            for (const Value& value : sequence)
+                expected.push_back(one.indexOf(value));
+            setWorkerThreads(threads);
+            const OrderedDedup all =
+                orderedDedup<Value>(sequence.size(), [&](std::size_t i) { return sequence[i]; });
+            setWorkerThreads(0);
+            EXPECT_EQ(all.indexOf, expected) << distinct << " distinct, " << threads << " threads";
+            ASSERT_EQ(all.firstOf.size(), expectedValues.size());
+            for (std::size_t k = 0; k < all.firstOf.size(); ++k) {
+                EXPECT_EQ(sequence[all.firstOf[k]].a, expectedValues[k].a);
+                EXPECT_EQ(expected[all.firstOf[k]], k);
+            }
+        }
+    EXPECT_TRUE(orderedDedup<std::uint32_t>(0, [](std::size_t) { return 0u; }).indexOf.empty());
 }
