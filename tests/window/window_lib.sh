@@ -230,22 +230,30 @@ require_window_tools() {
 # and returns its status. Window tests run in parallel, and xvfb-run -a alone lets two
 # that start at once pick the same display number (it reads lock files that the other's
 # server has not written yet): each try starts its search at a random number, and a try
-# whose server never came up (COMMAND did not start) is made again, up to 5 times.
+# whose server never came up (COMMAND did not start), or went away under it (a failed
+# COMMAND whose output says the display could not be opened), is made again, up to 5 times.
 run_in_xvfb() { # SECONDS SCREEN COMMAND...
-    local seconds=$1 screen=$2 started status=0 try
+    local seconds=$1 screen=$2 started output status=0 try
     shift 2
     started=$(mktemp)
+    output=$(mktemp)
     for try in 1 2 3 4 5; do
         rm -f "$started"
         status=0
         # -n before -a: -a searches upward from the number given so far.
         timeout "$seconds" xvfb-run -n $((100 + RANDOM % 800)) -a -s "-screen 0 $screen" \
-            bash -c ': > "$0" && exec "$@"' "$started" "$@" || status=$?
-        [[ -e $started ]] && break
-        echo "Xvfb did not come up (try $try of 5, status $status)" >&2
+            bash -c ': > "$0" && exec "$@"' "$started" "$@" > >(tee "$output") 2>&1 || status=$?
+        wait # for tee
+        if [[ ! -e $started ]]; then
+            echo "Xvfb did not come up (try $try of 5, status $status)" >&2
+        elif ((status != 0)) && grep -q "Failed to open display" "$output"; then
+            echo "Xvfb's display could not be opened (try $try of 5): the test runs again" >&2
+        else
+            break
+        fi
         sleep 1
     done
-    rm -f "$started"
+    rm -f "$started" "$output"
     return "$status"
 }
 
