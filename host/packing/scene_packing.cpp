@@ -4,6 +4,7 @@
 #include "base/ordered_dedup.h"
 #include "base/parallel.h"
 #include "base/phase_progress.h"
+#include "base/populated_memory.h"
 #include "base/startup_phases.h"
 #include "packing/flat_patches.h"
 #include "scene/scene_triangles.h"
@@ -126,8 +127,11 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
     std::size_t candidateBound = 3 * scene.triangles.size();
     for (const Mesh& mesh : scene.meshes)
         candidateBound += mesh.positions.size();
+    // Reserved (address space: a page costs only once written), its pages mapped on all
+    // threads; the distinct vertices are compacted into it at the end.
     std::vector<PackedVertex> candidates;
-    candidates.reserve(candidateBound); // address space: a page costs only once written
+    candidates.reserve(candidateBound);
+    populatePages(candidates.data(), candidateBound * sizeof(PackedVertex));
     // Until the deduplication, a triangle's x, y, z and a corner are candidates' numbers.
     std::vector<std::uint32_t> cornersOfTriangles;
     cornersOfTriangles.reserve(3 * triangles);
@@ -211,11 +215,13 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
                            vertexIndices.indexOf[triangle.z], patches[t]);
         }
     });
-    std::vector<PackedVertex> vertices(vertexIndices.firstOf.size());
-    for (std::size_t k = 0; k < vertices.size(); ++k)
-        vertices[k] = candidates[vertexIndices.firstOf[k]];
+    // In place: firstOf increases, and firstOf[k] >= k, so no candidate is overwritten
+    // before it is read.
+    for (std::size_t k = 0; k < vertexIndices.firstOf.size(); ++k)
+        candidates[k] = candidates[vertexIndices.firstOf[k]];
+    candidates.resize(vertexIndices.firstOf.size());
+    std::vector<PackedVertex> vertices = std::move(candidates);
     vertexIndices = {};
-    candidates = {};
     packed.vertexPositions.reserve(vertices.size());
     packed.vertexNormals.reserve(3 * vertices.size());
     // 28 bytes a vertex: the material index rides in the position's unused w, and the
