@@ -15,6 +15,8 @@
 #include <cstring>
 #include <optional>
 #include <string>
+#include <utility>
+#include <variant>
 
 namespace {
 
@@ -28,10 +30,25 @@ Scene texturedScene(const SourceModel& model, const ModelSceneSetup& setup, cons
     return scene;
 }
 
-// The file read by a model reader: the "read" phase.
-template <typename Read> SourceModel timedRead(Read read) {
+// A file read: a model's, which is then made a scene, or a scene file's scene.
+using FileContents = std::variant<SourceModel, Scene>;
+
+// The file at path read by the reader its first bytes, else its name, call for: the "read"
+// phase.
+FileContents readFile(const std::filesystem::path& path, const MappedFile& file,
+                      const SceneCapacity* capacity) {
     const PhaseTimer timer("read");
-    return read();
+    const std::string name = path.string();
+    const std::optional<OtherFormat> format = otherFileFormat(file.text());
+    if (format == OtherFormat::Ply || (!format && isPlyPath(path)))
+        return readPly(file.text(), name);
+    if (format == OtherFormat::Stl || (!format && isStlPath(path)))
+        return readStl(file.text(), name);
+    if (format && *format != OtherFormat::Utf16Text)
+        return readAssimpModel(file.text(), path, format);
+    if (isObjPath(path)) return readObjFile(path, file.text(), capacity);
+    if (isAssimpPath(path) && !format) return readAssimpModel(file.text(), path, std::nullopt);
+    return parseScene(file.text(), name);
 }
 
 } // namespace
@@ -43,28 +60,15 @@ Scene loadScene(const std::filesystem::path& path, const ModelSceneSetup& modelS
     // open succeeds on a directory on Linux and only the read fails; say it plainly.
     if (std::filesystem::is_directory(path, error))
         throw SceneError(name, 0, std::string("cannot open file: ") + std::strerror(EISDIR));
-    const MappedFile file(name);
-    const std::optional<OtherFormat> format = otherFileFormat(file.text());
-    if (format == OtherFormat::Ply || (!format && isPlyPath(path)))
-        return texturedScene(timedRead([&] { return readPly(file.text(), name); }), modelSetup,
-                             name, capacity);
-    if (format == OtherFormat::Stl || (!format && isStlPath(path)))
-        return texturedScene(timedRead([&] { return readStl(file.text(), name); }), modelSetup,
-                             name, capacity);
-    if (format && *format != OtherFormat::Utf16Text)
-        return texturedScene(timedRead([&] { return readAssimpModel(file.text(), path, format); }),
-                             modelSetup, name, capacity);
-    if (isObjPath(path))
-        return texturedScene(timedRead([&] { return readObjFile(path, file.text(), capacity); }),
-                             modelSetup, name, capacity);
-    if (isAssimpPath(path) && !format)
-        return texturedScene(
-            timedRead([&] { return readAssimpModel(file.text(), path, std::nullopt); }), modelSetup,
-            name, capacity);
-    Scene scene = [&] {
-        const PhaseTimer timer("read");
-        return parseScene(file.text(), name);
+    // The file is unmapped once read: a large model's pages (as many bytes as the file)
+    // are not held through the model phase, the start-up's peak of memory.
+    FileContents contents = [&] {
+        const MappedFile file(name);
+        return readFile(path, file, capacity);
     }();
+    if (const SourceModel* model = std::get_if<SourceModel>(&contents))
+        return texturedScene(*model, modelSetup, name, capacity);
+    Scene& scene = std::get<Scene>(contents);
     if (capacity) checkTriangleCapacity(*capacity, scene.triangles.size(), name);
-    return scene;
+    return std::move(scene);
 }
