@@ -140,7 +140,7 @@ SourceModel modelFromBytes(std::string_view bytes) {
     if (!in.done()) throw std::runtime_error("bytes left over");
     // Every index names what is there, as the readers guarantee.
     check(model.positionLines.size() == model.positions.size() &&
-          model.colors.size() == model.positions.size());
+          (model.colors.empty() || model.colors.size() == model.positions.size()));
     check(!model.faceStarts.empty() && model.faceStarts.front() == 0 &&
           model.faceStarts.back() == model.facePositions.size());
     for (std::size_t i = 1; i < model.faceStarts.size(); ++i)
@@ -150,7 +150,7 @@ SourceModel modelFromBytes(std::string_view bytes) {
     for (const SourceTriangle& t : model.triangles) {
         for (const SourceCorner& corner : t.corners)
             check(corner.position < model.positions.size() &&
-                  (!corner.normal || *corner.normal < model.normals.size()) &&
+                  (corner.normal == kNoNormal || corner.normal < model.normals.size()) &&
                   (corner.texcoord == kNoTexcoord || corner.texcoord < model.texcoords.size()));
         check(t.material < model.materials.size() && t.face + 1 < model.faceStarts.size());
     }

@@ -88,7 +88,7 @@ Mesh modelMesh(const SourceModel& model, const std::vector<glm::dvec3>& position
         if (fates[t] != TriangleFate::kept) continue;
         ++kept;
         for (const SourceCorner& corner : model.triangles[t].corners)
-            anyUnnormaled = anyUnnormaled || !corner.normal;
+            anyUnnormaled = anyUnnormaled || corner.normal == kNoNormal;
     }
     std::optional<SmoothNormals> smooth;
     if (anyUnnormaled) smooth.emplace(model, positions, creaseDegrees, farFaces);
@@ -113,8 +113,9 @@ Mesh modelMesh(const SourceModel& model, const std::vector<glm::dvec3>& position
                     CornerKey& key = blockKeys[3 * i + c];
                     key.position = corner.position;
                     key.texcoord = corner.texcoord;
-                    key.normal = corner.normal ? normals[*corner.normal]
-                                               : smooth->at(source.face, corner.position);
+                    key.normal = corner.normal != kNoNormal
+                                     ? normals[corner.normal]
+                                     : smooth->at(source.face, corner.position);
                 }
             }
         });

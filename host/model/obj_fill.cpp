@@ -199,8 +199,8 @@ class ChunkReader {
         model_.positions[i] = {numbers_[0], numbers_[1], numbers_[2]};
         model_.positionLines[i] = line;
         // x y z [w], or x y z r g b with a colour per vertex.
-        model_.colors[i] =
-            numbers_.size() >= 6 ? std::optional(clampedColor(numbers_, 3)) : std::nullopt;
+        if (numbers_.size() >= 6)
+            result_.colors.emplace_back(std::uint32_t(i), clampedColor(numbers_, 3));
     }
     void addNormal() {
         expectRoom(next_.normals, end_.normals);

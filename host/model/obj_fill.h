@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 // Where a chunk's statements go: the first line, position, normal, ... of the chunk in
@@ -36,6 +37,9 @@ struct ObjChunkResult {
     std::optional<SceneError> error; // the chunk's first; it stops there
     std::vector<ObjPolygon> polygons;
     std::vector<SourceCorner> polygonCorners;
+    // The chunk's positions that have a colour (index, colour): the model's colors are made
+    // from them, and only when some position has one.
+    std::vector<std::pair<std::uint32_t, glm::dvec3>> colors;
 };
 
 // The materials each usemtl gives, in the chunk's order, and the one before its first.

@@ -18,6 +18,7 @@
 #include "scene/scene_error.h"
 #include "scene/scene_lexer.h"
 
+#include <algorithm>
 #include <exception>
 #include <map>
 #include <optional>
@@ -97,7 +98,6 @@ MaterialReplay replayMaterials(const std::vector<ObjChunkSurvey>& surveys,
 void sizeArrays(SourceModel& model, const ObjChunkPlace& total) {
     resizePopulated(model.positions, total.positions);
     resizePopulated(model.positionLines, total.positions);
-    resizePopulated(model.colors, total.positions);
     resizePopulated(model.normals, total.normals);
     resizePopulated(model.texcoords, total.texcoords);
     resizePopulated(model.facePositions, total.facePositions);
@@ -179,6 +179,20 @@ SourceModel parseObj(std::string_view text, const std::string& fileName, const M
         if (chunk.error && (!replay.error || chunk.error->line < replay.errorLine))
             throw *chunk.error;
     if (replay.error) std::rethrow_exception(replay.error);
+    const bool anyColor = std::any_of(read.begin(), read.end(), [](const ObjChunkResult& chunk) {
+        return !chunk.colors.empty();
+    });
+    if (anyColor) {
+        resizePopulated(model.colors, model.positions.size());
+        parallelFor(
+            chunks,
+            [&](std::size_t k) {
+                for (const auto& [position, color] : read[k].colors)
+                    model.colors[position] = color;
+                read[k].colors = {};
+            },
+            0);
+    }
     if (model.triangles.empty()) throw SceneError(fileName, 0, "no faces (f) found");
 
     std::vector<FannedConcave> fanned(chunks);

@@ -12,13 +12,16 @@
 #include <string>
 #include <vector>
 
-// A corner's texcoord when its face gives none.
+// A corner's texcoord, and its normal, when its face gives none.
 inline constexpr std::uint32_t kNoTexcoord = UINT32_MAX;
+inline constexpr std::uint32_t kNoNormal = UINT32_MAX;
 
 // One corner of a face: indices into SourceModel's positions, normals and texcoords (0-based).
+// 12 bytes: the sentinels rather than std::optional, which took 8 bytes for the normal (a
+// triangle 64 bytes rather than 56, the largest of a model's arrays).
 struct SourceCorner {
     std::uint32_t position = 0;
-    std::optional<std::uint32_t> normal; // none: the corner gets a smooth normal
+    std::uint32_t normal = kNoNormal; // kNoNormal: the corner gets a smooth normal
     std::uint32_t texcoord = kNoTexcoord;
 };
 
@@ -29,11 +32,13 @@ struct SourceTriangle {
     std::uint32_t face = 0;     // the face (faceCount, facePositions) it was split from
     std::int64_t line = 0;      // the face's line in the OBJ file
 };
+static_assert(sizeof(SourceTriangle) == 56);
 
 struct SourceModel {
     std::vector<glm::dvec3> positions;
     std::vector<std::int64_t> positionLines; // each position's `v` line, for messages
-    // `v x y z r g b` (a common extension): the vertex's diffuse colour, clamped to [0, 1].
+    // `v x y z r g b` (a common extension): the vertex's diffuse colour, clamped to [0, 1];
+    // one a position, or none at all when no position has one (32 bytes a position saved).
     std::vector<std::optional<glm::dvec3>> colors;
     std::vector<glm::dvec3> normals;   // vn, as given
     std::vector<glm::dvec2> texcoords; // vt's u and v (a third value, w, is not kept)

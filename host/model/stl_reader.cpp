@@ -16,8 +16,11 @@ void addTriangle(SourceModel& model, const std::uint32_t corners[3], std::int64_
         model.facePositions.push_back(corners[k]);
     model.faceStarts.push_back(model.facePositions.size());
     const auto face = static_cast<std::uint32_t>(faceCount(model) - 1);
+    auto corner = [](std::uint32_t position) {
+        return SourceCorner{position, kNoNormal, kNoTexcoord};
+    };
     model.triangles.push_back(
-        {{{corners[0], {}}, {corners[1], {}}, {corners[2], {}}}, 0, face, line});
+        {{corner(corners[0]), corner(corners[1]), corner(corners[2])}, 0, face, line});
 }
 
 bool isSpace(char c) {

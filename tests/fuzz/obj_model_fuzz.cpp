@@ -57,7 +57,7 @@ std::string describe(const Outcome& outcome) {
         out << "\nv";
         vec(model.positions[i]);
         out << " line " << model.positionLines[i];
-        if (model.colors[i]) vec(*model.colors[i]);
+        if (!model.colors.empty() && model.colors[i]) vec(*model.colors[i]);
     }
     for (const glm::dvec3& normal : model.normals)
         out << "\nvn", vec(normal);
@@ -72,7 +72,7 @@ std::string describe(const Outcome& outcome) {
         out << "\ntriangle";
         for (const SourceCorner& corner : triangle.corners)
             out << ' ' << corner.position << '/' << corner.texcoord << '/'
-                << (corner.normal ? std::to_string(*corner.normal) : "-");
+                << (corner.normal != kNoNormal ? std::to_string(corner.normal) : "-");
         out << " material " << triangle.material << " face " << triangle.face << " line "
             << triangle.line;
     }
