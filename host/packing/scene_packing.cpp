@@ -218,7 +218,7 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
     // In place: firstOf increases, and firstOf[k] >= k, so no candidate is overwritten
     // before it is read.
     for (std::size_t k = 0; k < vertexIndices.firstOf.size(); ++k)
-        candidates[k] = candidates[vertexIndices.firstOf[k]];
+        if (vertexIndices.firstOf[k] != k) candidates[k] = candidates[vertexIndices.firstOf[k]];
     candidates.resize(vertexIndices.firstOf.size());
     std::vector<PackedVertex> vertices = std::move(candidates);
     vertexIndices = {};
