@@ -2,11 +2,9 @@
 
 #include "base/parallel.h"
 #include "model/exact_vectors.h"
-#include "model/smooth_normals.h"
 
 #include <algorithm>
 #include <cstring>
-#include <optional>
 
 namespace {
 
@@ -27,33 +25,55 @@ struct CornerKey {
     std::uint32_t texcoord = kNoTexcoord;
     glm::dvec3 normal{0.0};
 };
-static_assert(sizeof(CornerKey) == 32); // no padding: compared as bytes
 
 // The vertices made so far, looked up among those at the corner's position: a short chain
 // in the order they were made. A model's triangles name nearby positions one after another,
 // so the look-ups stay in the cache, where a hash table's missed it on every corner.
+// A vertex is kept as the mesh will hold it, not as a key: its normal (not yet turned) in
+// the mesh's array, its position's and texture coordinates' indices beside it, 8 bytes a
+// vertex where a key took 32.
 class VertexChains {
   public:
-    explicit VertexChains(std::size_t positions) : first_(positions, kNone) {}
+    VertexChains(std::size_t positions, bool texcoords, std::vector<glm::dvec3>& normals)
+        : first_(positions, kNone), texcoords_(texcoords), normals_(normals) {
+        // As many vertices as positions, the common case, without growing: a copy of
+        // growing arrays costs more than their look-ups.
+        positionOf_.reserve(positions);
+        next_.reserve(positions);
+        normals_.reserve(positions);
+        if (texcoords_) texcoordOf_.reserve(positions);
+    }
 
-    // The vertex of key, made (appended to keys) if no corner before had it.
-    std::uint32_t indexOf(const CornerKey& key, std::vector<CornerKey>& keys) {
+    // The vertex of key, made if no corner before had it. The chain holds only vertices at
+    // key's position; texcoords and normal are compared bit for bit.
+    std::uint32_t indexOf(const CornerKey& key) {
         std::uint32_t* link = &first_[key.position];
         for (std::uint32_t vertex = *link; vertex != kNone; vertex = next_[vertex]) {
-            if (std::memcmp(&keys[vertex], &key, sizeof key) == 0) return vertex;
+            if ((!texcoords_ || texcoordOf_[vertex] == key.texcoord) &&
+                std::memcmp(&normals_[vertex], &key.normal, sizeof key.normal) == 0)
+                return vertex;
             link = &next_[vertex];
         }
-        const auto vertex = static_cast<std::uint32_t>(keys.size());
+        const auto vertex = static_cast<std::uint32_t>(positionOf_.size());
         *link = vertex; // before next_ grows, which may move what link points into
-        keys.push_back(key);
+        positionOf_.push_back(key.position);
+        if (texcoords_) texcoordOf_.push_back(key.texcoord);
+        normals_.push_back(key.normal);
         next_.push_back(kNone);
         return vertex;
     }
 
+    std::size_t size() const { return positionOf_.size(); }
+    std::uint32_t positionOf(std::size_t vertex) const { return positionOf_[vertex]; }
+    std::uint32_t texcoordOf(std::size_t vertex) const { return texcoordOf_[vertex]; }
+
   private:
     static constexpr std::uint32_t kNone = UINT32_MAX;
-    std::vector<std::uint32_t> first_; // per position: its first vertex
-    std::vector<std::uint32_t> next_;  // per vertex: the next at its position
+    std::vector<std::uint32_t> first_;                   // per position: its first vertex
+    std::vector<std::uint32_t> next_;                    // per vertex: the next at its position
+    std::vector<std::uint32_t> positionOf_, texcoordOf_; // per vertex (texcoords: if any)
+    bool texcoords_;
+    std::vector<glm::dvec3>& normals_; // per vertex
 };
 
 // Triangles are keyed this many at a time, on all threads, then looked up in order.
@@ -77,29 +97,26 @@ std::vector<TriangleFate> triangleFates(const SourceModel& model,
     return fates;
 }
 
+bool needsSmoothNormals(const SourceModel& model, const std::vector<TriangleFate>& fates) {
+    for (std::size_t t = 0; t < model.triangles.size(); ++t) {
+        if (fates[t] != TriangleFate::kept) continue;
+        for (const SourceCorner& corner : model.triangles[t].corners)
+            if (corner.normal == kNoNormal) return true;
+    }
+    return false;
+}
+
 Mesh modelMesh(const SourceModel& model, const std::vector<glm::dvec3>& positions,
                const std::vector<glm::dvec3>& normals, const std::vector<TriangleFate>& fates,
-               double creaseDegrees, const std::vector<bool>& farFaces,
-               const VertexPlacement& placement, PhaseProgress* progress) {
+               std::optional<SmoothNormals> smooth, const VertexPlacement& placement,
+               PhaseProgress* progress) {
     const std::size_t triangles = model.triangles.size();
-    std::size_t kept = 0;
-    bool anyUnnormaled = false; // a kept corner without a normal: the smooth ones are made
-    for (std::size_t t = 0; t < triangles; ++t) {
-        if (fates[t] != TriangleFate::kept) continue;
-        ++kept;
-        for (const SourceCorner& corner : model.triangles[t].corners)
-            anyUnnormaled = anyUnnormaled || corner.normal == kNoNormal;
-    }
-    std::optional<SmoothNormals> smooth;
-    if (anyUnnormaled) smooth.emplace(model, positions, creaseDegrees, farFaces);
-
+    const auto kept =
+        static_cast<std::size_t>(std::count(fates.begin(), fates.end(), TriangleFate::kept));
     Mesh mesh;
     mesh.triangles.reserve(kept);
-    mesh.triangleMaterials.reserve(kept);
-    mesh.triangleLines.reserve(kept);
-    std::vector<CornerKey> keys; // one per vertex
-    keys.reserve(positions.size());
-    VertexChains vertexOf(positions.size());
+    const bool texcoords = !model.texcoords.empty();
+    VertexChains vertexOf(positions.size(), texcoords, mesh.normals);
     std::vector<CornerKey> blockKeys(3 * kKeyBlock);
     for (std::size_t first = 0; first < triangles; first += kKeyBlock) {
         const std::size_t count = std::min(kKeyBlock, triangles - first);
@@ -121,35 +138,47 @@ Mesh modelMesh(const SourceModel& model, const std::vector<glm::dvec3>& position
         });
         for (std::size_t i = 0; i < count; ++i) {
             if (fates[first + i] != TriangleFate::kept) continue;
-            const SourceTriangle& source = model.triangles[first + i];
             glm::uvec3 triangle;
             for (int c = 0; c < 3; ++c) // in corner order: vertices are numbered as they come
-                triangle[c] = vertexOf.indexOf(blockKeys[3 * i + c], keys);
+                triangle[c] = vertexOf.indexOf(blockKeys[3 * i + c]);
             mesh.triangles.push_back(triangle);
-            mesh.triangleMaterials.push_back(source.material);
-            mesh.triangleLines.push_back(source.line);
         }
         if (progress) progress->advance(count);
     }
+    // The smooth normals go before the other arrays are made: the phase's peak of memory is
+    // where the corners have their normals. The kept triangles' materials and lines are
+    // copied after it, for the same reason.
+    smooth.reset();
+    mesh.triangleMaterials.reserve(kept);
+    mesh.triangleLines.reserve(kept);
+    for (std::size_t t = 0; t < triangles; ++t) {
+        if (fates[t] != TriangleFate::kept) continue;
+        mesh.triangleMaterials.push_back(model.triangles[t].material);
+        mesh.triangleLines.push_back(model.triangles[t].line);
+    }
 
-    // Each vertex's attributes, from its key.
-    const bool anyColor = std::any_of(model.colors.begin(), model.colors.end(),
-                                      [](const auto& color) { return color.has_value(); });
-    mesh.positions.resize(keys.size());
-    mesh.normals.resize(keys.size());
-    if (!model.texcoords.empty()) mesh.texcoords.resize(keys.size());
-    if (anyColor) mesh.colors.resize(keys.size());
-    const std::vector<IndexRange> ranges = splitRange(keys.size(), 8192);
+    // Each vertex's other attributes, from its position's and texture coordinates' indices;
+    // its normal turned in place.
+    const bool anyColor =
+        !model.colors.empty() && std::any_of(model.colors.begin(), model.colors.end(),
+                                             [](const auto& color) { return color.has_value(); });
+    const std::size_t vertices = vertexOf.size();
+    mesh.positions.resize(vertices);
+    if (texcoords) mesh.texcoords.resize(vertices);
+    if (anyColor) mesh.colors.resize(vertices);
+    const std::vector<IndexRange> ranges = splitRange(vertices, 8192);
     parallelFor(ranges.size(), [&](std::size_t k) {
         for (std::size_t v = ranges[k].begin; v < ranges[k].end; ++v) {
-            const CornerKey& key = keys[v];
-            mesh.positions[v] = placement.place(positions[key.position]);
-            mesh.normals[v] = placement.turn(key.normal);
-            if (!model.texcoords.empty())
+            const std::uint32_t position = vertexOf.positionOf(v);
+            mesh.positions[v] = placement.place(positions[position]);
+            mesh.normals[v] = placement.turn(mesh.normals[v]);
+            if (texcoords) {
+                const std::uint32_t texcoord = vertexOf.texcoordOf(v);
                 mesh.texcoords[v] =
-                    key.texcoord == kNoTexcoord ? glm::dvec2(0.0) : model.texcoords[key.texcoord];
+                    texcoord == kNoTexcoord ? glm::dvec2(0.0) : model.texcoords[texcoord];
+            }
             if (anyColor) {
-                const auto& color = model.colors[key.position];
+                const auto& color = model.colors[position];
                 mesh.colors[v] = color ? glm::dvec4(*color, 1.0) : glm::dvec4(0.0);
             }
         }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "base/phase_progress.h"
+#include "model/smooth_normals.h"
 #include "model/source_model.h"
 #include "scene/mesh.h"
 
@@ -12,6 +13,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 // What becomes of a model's triangle: the mesh gets it, or it is left out for using a
@@ -30,9 +32,14 @@ struct VertexPlacement {
     std::function<glm::dvec3(const glm::dvec3&)> place, turn;
 };
 
-// The kept triangles as a mesh (its materials not set): positions and normals as turned up,
-// creaseDegrees and farFaces for the smooth normals.
+// Whether a kept triangle has a corner without a normal: the model then needs its smooth
+// normals.
+bool needsSmoothNormals(const SourceModel& model, const std::vector<TriangleFate>& fates);
+
+// The kept triangles as a mesh (its materials not set): positions and normals as turned up;
+// smooth: the model's smooth normals when it needs them (needsSmoothNormals), released
+// once the corners have their normals, before the vertices' arrays are filled.
 Mesh modelMesh(const SourceModel& model, const std::vector<glm::dvec3>& positions,
                const std::vector<glm::dvec3>& normals, const std::vector<TriangleFate>& fates,
-               double creaseDegrees, const std::vector<bool>& farFaces,
-               const VertexPlacement& placement, PhaseProgress* progress = nullptr);
+               std::optional<SmoothNormals> smooth, const VertexPlacement& placement,
+               PhaseProgress* progress = nullptr);

@@ -249,8 +249,7 @@ std::optional<std::string> lyingDown(const ModelPlacement& model) {
 
 } // namespace
 
-Scene sceneFromModel(const SourceModel& model, const ModelSceneSetup& setup,
-                     const std::string& fileName) {
+Scene sceneFromModel(SourceModel model, const ModelSceneSetup& setup, const std::string& fileName) {
     // The mesh's vertices take most of the time: its triangles are the units.
     PhaseProgress progress("Making a mesh of " + fileName, model.triangles.size());
     // The model turned so that its up axis is +y; as read, not copied, when it already is.
@@ -297,10 +296,20 @@ Scene sceneFromModel(const SourceModel& model, const ModelSceneSetup& setup,
     Scene scene;
     scene.ambient = setup.ambient;
     scene.warnings = model.warnings;
-    Mesh mesh = modelMesh(model, positions, normals, fates, setup.creaseDegrees, farFaces,
+    std::optional<SmoothNormals> smooth;
+    if (needsSmoothNormals(model, fates))
+        smooth.emplace(model, positions, setup.creaseDegrees, farFaces);
+    // The model's arrays go as soon as they have served, for the phase's peak of memory: the
+    // faces once the smooth normals are made, the triangles once the mesh is.
+    model.facePositions = {};
+    model.faceStarts = {};
+    farFaces = {};
+    const std::size_t triangleCount = model.triangles.size();
+    Mesh mesh = modelMesh(model, positions, normals, fates, std::move(smooth),
                           {[&](const glm::dvec3& p) { return placement.place(p); },
                            [&](const glm::dvec3& n) { return placement.turn.apply(n); }},
                           &progress);
+    model.triangles = {};
     mesh.materials = model.materials;
     const auto farTriangles =
         static_cast<std::size_t>(std::count(fates.begin(), fates.end(), TriangleFate::far));
@@ -316,7 +325,7 @@ Scene sceneFromModel(const SourceModel& model, const ModelSceneSetup& setup,
     }
     if (mesh.triangles.empty())
         throw SceneError(fileName, 0,
-                         "every one of the model's " + std::to_string(model.triangles.size()) +
+                         "every one of the model's " + std::to_string(triangleCount) +
                              " triangles is degenerate (two corners at one position, or no area): "
                              "nothing is left to render");
     // The rig (or one light above the camera), then the model's own emitters.

@@ -53,6 +53,6 @@ inline constexpr double kInteriorEyeDepth = 0.4;
 inline constexpr double kInteriorRigShare = 0.15;
 
 // Triangles with two corners at one position, or of no area, are left out, and counted in
-// a warning; fileName names the model in it.
-Scene sceneFromModel(const SourceModel& model, const ModelSceneSetup& setup,
-                     const std::string& fileName);
+// a warning; fileName names the model in it. The model is taken, not copied (std::move it),
+// so that its arrays go as soon as they have served: the phase's peak of memory.
+Scene sceneFromModel(SourceModel model, const ModelSceneSetup& setup, const std::string& fileName);

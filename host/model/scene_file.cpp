@@ -13,6 +13,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -21,12 +22,13 @@
 namespace {
 
 // A model made a scene, with the textures it names, when the device holds its triangles.
-Scene texturedScene(const SourceModel& model, const ModelSceneSetup& setup, const std::string& name,
+Scene texturedScene(SourceModel&& model, const ModelSceneSetup& setup, const std::string& name,
                     const SceneCapacity* capacity) {
     if (capacity) checkTriangleCapacity(*capacity, model.triangles.size(), name);
     const PhaseTimer timer("model");
-    Scene scene = sceneFromModel(model, setup, name);
-    loadTextures(scene, name, model.embeddedTextures);
+    const std::map<std::string, std::string> embeddedTextures = std::move(model.embeddedTextures);
+    Scene scene = sceneFromModel(std::move(model), setup, name);
+    loadTextures(scene, name, embeddedTextures);
     return scene;
 }
 
@@ -66,8 +68,8 @@ Scene loadScene(const std::filesystem::path& path, const ModelSceneSetup& modelS
         const MappedFile file(name);
         return readFile(path, file, capacity);
     }();
-    if (const SourceModel* model = std::get_if<SourceModel>(&contents))
-        return texturedScene(*model, modelSetup, name, capacity);
+    if (SourceModel* model = std::get_if<SourceModel>(&contents))
+        return texturedScene(std::move(*model), modelSetup, name, capacity);
     Scene& scene = std::get<Scene>(contents);
     if (capacity) checkTriangleCapacity(*capacity, scene.triangles.size(), name);
     return std::move(scene);
