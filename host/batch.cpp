@@ -53,10 +53,9 @@ std::vector<FrameView> framesOf(const Options& options, const Scene& scene,
 }
 
 // Renders the frames of one loaded scene, each to its file (reserved just before its render,
-// and removed again if that render fails).
-void renderScene(const Options& options, const Context& context, KernelCache& kernels,
-                 const Scene& scene, const std::string& name,
-                 const std::vector<FrameView>& frames) {
+// and removed again if that render fails). The scene's geometry is released once packed.
+void renderScene(const Options& options, const Context& context, KernelCache& kernels, Scene& scene,
+                 const std::string& name, const std::vector<FrameView>& frames) {
     RenderSettings settings = renderSettingsFrom(options);
     settings.terminatorFix = terminatorFixFor(options, scene);
     settings.floatOutput = holdsFloats(*outputFormatOf(options.outputPath));
@@ -66,7 +65,7 @@ void renderScene(const Options& options, const Context& context, KernelCache& ke
         destroyHeadlessTarget(target, context);
         destroyRenderer(renderer, context);
     });
-    createRenderer(renderer, context, scene, settings, &kernels);
+    createRendererReleasingGeometry(renderer, context, scene, settings, &kernels);
     createHeadlessTarget(target, context, renderer, options.regionSide);
     for (const FrameView& frame : frames) {
         const std::filesystem::path output =

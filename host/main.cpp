@@ -68,8 +68,9 @@ void listDevices(const Options& options) {
 // a PNG on stdout), a benchmark (with -o, its last frame written too), or (--pixel without
 // -o) only the story of one pixel.
 // Before any work, the output file is known to be writable (its .tmp exists) and the
-// image to fit the device; a failure or Ctrl-C afterwards removes the .tmp again.
-void runHeadless(const Options& options, const Scene& scene, const StartupTimes& startup) {
+// image to fit the device; a failure or Ctrl-C afterwards removes the .tmp again. The
+// scene's geometry is released once packed (createRendererReleasingGeometry).
+void runHeadless(const Options& options, Scene& scene, const StartupTimes& startup) {
     installInterruptHandlers();
     const bool writing = !options.outputPath.empty();
     const bool toFile = writing && !isStandardOutput(options.outputPath);
@@ -94,7 +95,7 @@ void runHeadless(const Options& options, const Scene& scene, const StartupTimes&
     settings.terminatorFix = terminatorFixFor(options, scene);
     // -o out.pfm|out.exr: the averages before the 8-bit rounding (docs/accuracy.md).
     settings.floatOutput = writing && holdsFloats(*outputFormatOf(options.outputPath));
-    createRenderer(renderer, context, scene, settings);
+    createRendererReleasingGeometry(renderer, context, scene, settings);
     createHeadlessTarget(target, context, renderer, options.regionSide);
     if (options.benchFrames > 0)
         std::cout << runBenchmark(context, renderer, target, options, startup) << std::endl;

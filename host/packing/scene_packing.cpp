@@ -53,12 +53,77 @@ struct PackedMaterial {
 
 // A vertex as the GPU stores it, the unit of vertex deduplication.
 struct PackedVertex {
-    glm::vec4 position;
-    glm::vec4 normal;
+    glm::vec4 position; // w zero
+    glm::vec4 normal;   // w zero
     std::uint32_t material;
     std::uint32_t padding;    // zero, so equal vertices have equal bytes
     glm::vec2 texcoord;       // zero when the scene has no textures
-    glm::dvec4 exactPosition; // fp64: the position in double; fp32: zero
+    glm::dvec4 exactPosition; // fp64: the position in double, w zero; fp32: zero
+};
+
+// The vertices every corner may make, before deduplication: each candidate's fields apart,
+// so that a scene holds only what it uses: 28 bytes a candidate for the position, normal
+// and material, texture coordinates only with textures, the double position only in fp64
+// (a whole PackedVertex took 80 bytes, a scan's largest array while it is packed). A
+// PackedVertex is made of them wherever one is compared.
+class Candidates {
+  public:
+    // bound: at least the candidates to come, whose pages are mapped on all threads.
+    Candidates(std::size_t bound, bool textured, bool fp64) : textured_(textured), fp64_(fp64) {
+        reserveMapped(cores_, bound);
+        if (textured_) reserveMapped(texcoords_, bound);
+        if (fp64_) reserveMapped(exactPositions_, bound);
+    }
+
+    std::uint32_t add(const PackedVertex& vertex) {
+        cores_.push_back({glm::vec3(vertex.position), glm::vec3(vertex.normal), vertex.material});
+        if (textured_) texcoords_.push_back(vertex.texcoord);
+        if (fp64_) exactPositions_.push_back(glm::dvec3(vertex.exactPosition));
+        return std::uint32_t(cores_.size() - 1);
+    }
+
+    std::size_t size() const { return cores_.size(); }
+
+    PackedVertex operator[](std::size_t c) const {
+        PackedVertex vertex{};
+        vertex.position = glm::vec4(cores_[c].position, 0.0f);
+        vertex.normal = glm::vec4(cores_[c].normal, 0.0f);
+        vertex.material = cores_[c].material;
+        if (textured_) vertex.texcoord = texcoords_[c];
+        if (fp64_) vertex.exactPosition = glm::dvec4(exactPositions_[c], 0.0);
+        return vertex;
+    }
+
+    // Keeps candidate firstOf[k] as the k-th, in place: firstOf increases and
+    // firstOf[k] >= k, so none is overwritten before it is read.
+    void keep(const std::vector<std::uint32_t>& firstOf) {
+        for (std::size_t k = 0; k < firstOf.size(); ++k) {
+            if (firstOf[k] == k) continue;
+            cores_[k] = cores_[firstOf[k]];
+            if (textured_) texcoords_[k] = texcoords_[firstOf[k]];
+            if (fp64_) exactPositions_[k] = exactPositions_[firstOf[k]];
+        }
+        cores_.resize(firstOf.size());
+        if (textured_) texcoords_.resize(firstOf.size());
+        if (fp64_) exactPositions_.resize(firstOf.size());
+    }
+
+  private:
+    template <typename T> static void reserveMapped(std::vector<T>& values, std::size_t bound) {
+        values.reserve(bound); // address space: a page costs only once written
+        populatePages(values.data(), bound * sizeof(T));
+    }
+
+    struct Core {
+        glm::vec3 position;
+        glm::vec3 normal;
+        std::uint32_t material;
+    };
+    static_assert(sizeof(Core) == 28);
+    bool textured_, fp64_;
+    std::vector<Core> cores_;
+    std::vector<glm::vec2> texcoords_;
+    std::vector<glm::dvec3> exactPositions_;
 };
 
 // Each texture's place in the texel array (GpuMaterialTexture), by Scene::textures' index;
@@ -126,11 +191,8 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
     std::size_t candidateBound = 3 * scene.triangles.size();
     for (const Mesh& mesh : scene.meshes)
         candidateBound += mesh.positions.size();
-    // Reserved (address space: a page costs only once written), its pages mapped on all
-    // threads; the distinct vertices are compacted into it at the end.
-    std::vector<PackedVertex> candidates;
-    candidates.reserve(candidateBound);
-    populatePages(candidates.data(), candidateBound * sizeof(PackedVertex));
+    // The distinct vertices are compacted into it at the end.
+    Candidates candidates(candidateBound, textured, fp64);
     // Until the deduplication, a triangle's x, y, z and a corner are candidates' numbers.
     std::vector<std::uint32_t> cornersOfTriangles;
     cornersOfTriangles.reserve(3 * triangles);
@@ -142,8 +204,7 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
         packedVertex.material = materialIndex(vertex.material, texture);
         if (textured) packedVertex.texcoord = glm::vec2(texcoord);
         if (fp64) packedVertex.exactPosition = glm::dvec4(vertex.position, 0.0);
-        candidates.push_back(packedVertex);
-        return std::uint32_t(candidates.size() - 1);
+        return candidates.add(packedVertex);
     };
     for (const Triangle& triangle : scene.triangles) {
         glm::uvec4 packedTriangle(0u);
@@ -186,7 +247,7 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
     packedCorners = {};
     // The position the GPU computes with: rounded to float in fp32.
     auto cornerOf = [&](std::size_t c) {
-        const PackedVertex& vertex = candidates[c];
+        const PackedVertex vertex = candidates[c];
         return fp64 ? glm::dvec4(glm::dvec3(vertex.exactPosition), 0.0)
                     : glm::dvec4(glm::dvec3(glm::vec3(vertex.position)), 0.0);
     };
@@ -214,18 +275,14 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
                            vertexIndices.indexOf[triangle.z], patches[t]);
         }
     });
-    // In place: firstOf increases, and firstOf[k] >= k, so no candidate is overwritten
-    // before it is read.
-    for (std::size_t k = 0; k < vertexIndices.firstOf.size(); ++k)
-        if (vertexIndices.firstOf[k] != k) candidates[k] = candidates[vertexIndices.firstOf[k]];
-    candidates.resize(vertexIndices.firstOf.size());
-    std::vector<PackedVertex> vertices = std::move(candidates);
+    candidates.keep(vertexIndices.firstOf);
     vertexIndices = {};
-    packed.vertexPositions.reserve(vertices.size());
-    packed.vertexNormals.reserve(3 * vertices.size());
+    packed.vertexPositions.reserve(candidates.size());
+    packed.vertexNormals.reserve(3 * candidates.size());
     // 28 bytes a vertex: the material index rides in the position's unused w, and the
     // normal takes three floats rather than a padded vec4.
-    for (const PackedVertex& vertex : vertices) {
+    for (std::size_t v = 0; v < candidates.size(); ++v) {
+        const PackedVertex vertex = candidates[v];
         packed.vertexPositions.push_back(
             glm::vec4(glm::vec3(vertex.position), std::bit_cast<float>(vertex.material)));
         packed.vertexNormals.insert(packed.vertexNormals.end(),
@@ -400,15 +457,25 @@ void applyLeafOrder(PackedScene& packed, const Bvh& bvh) {
     packed.triangles = std::move(triangles);
 }
 
+namespace {
+
+double millisecondsSince(std::chrono::steady_clock::time_point from) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - from)
+        .count();
+}
+
+} // namespace
+
 PackedScene packScene(const Scene& scene, Acceleration acceleration, Precision precision) {
-    auto start = std::chrono::steady_clock::now();
-    auto millisecondsSince = [](std::chrono::steady_clock::time_point from) {
-        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - from)
-            .count();
-    };
+    const auto start = std::chrono::steady_clock::now();
     PackedScene packed = packSceneInFileOrder(scene, precision);
     recordPhase("pack", millisecondsSince(start));
-    start = std::chrono::steady_clock::now();
+    arrangeForHierarchy(packed, acceleration);
+    return packed;
+}
+
+void arrangeForHierarchy(PackedScene& packed, Acceleration acceleration) {
+    auto start = std::chrono::steady_clock::now();
     Bvh bvh = buildBvh(primitiveBounds(packed));
     HierarchyReport& report = packed.hierarchy;
     report.buildMs = millisecondsSince(start);
@@ -423,7 +490,6 @@ PackedScene packScene(const Scene& scene, Acceleration acceleration, Precision p
     report.used = useHierarchy(acceleration, report.primitives);
     if (report.used) packed.bvhNodes = std::move(bvh.nodes);
     recordPhase("pack", millisecondsSince(start)); // the leaf order applied
-    return packed;
 }
 
 std::string accelerationSummary(const HierarchyReport& report) {

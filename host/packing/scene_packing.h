@@ -90,7 +90,13 @@ void writeNormalsAndMaterials(const PackedScene& packed, void* destination);
 // What the GPU needs: the scene packed in the hierarchy's leaf order, with the hierarchy
 // itself only when it pays (acceleration, useHierarchy). The leaf order is used either
 // way, so both paths see the same primitive order and break ties alike.
+// packSceneInFileOrder, then arrangeForHierarchy.
 PackedScene packScene(const Scene& scene, Acceleration acceleration, Precision precision);
+
+// The second step of packScene, which needs the scene no more: the hierarchy built over
+// the packed primitives and the packed scene put in its leaf order (the "hierarchy" phase
+// and the rest of "pack").
+void arrangeForHierarchy(PackedScene& packed, Acceleration acceleration);
 
 // The first step of packScene: spheres and triangles in file order, materials and
 // vertices shared; no hierarchy.

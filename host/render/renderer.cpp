@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -78,21 +79,41 @@ void createDescriptors(Renderer& renderer, const Context& context) {
                            0, nullptr);
 }
 
-// Slot k's file index and line, from the packer's leaf order.
-SlotSources slotSources(const Scene& scene, const PackedScene& packed) {
-    SlotSources sources;
-    for (std::uint32_t index : packed.sphereOrder) {
-        sources.sphereIndex.push_back(index);
-        sources.sphereLine.push_back(scene.spheres[index].line);
-    }
-    const std::vector<std::int64_t> lines = triangleLines(scene);
-    for (std::uint32_t index : packed.triangleOrder) {
-        sources.triangleIndex.push_back(index);
-        sources.triangleLine.push_back(lines[index]);
-    }
+// Each primitive's and light's line in the scene file, in file order: what the slots'
+// sources need of the scene, taken before its geometry may be released.
+struct FileLines {
+    std::vector<std::int64_t> spheres, triangles, lights;
+};
+
+FileLines fileLines(const Scene& scene) {
+    FileLines lines;
+    for (const Sphere& sphere : scene.spheres)
+        lines.spheres.push_back(sphere.line);
+    lines.triangles = triangleLines(scene);
     for (const Light& light : scene.lights)
-        sources.lightLine.push_back(light.line);
+        lines.lights.push_back(light.line);
+    return lines;
+}
+
+// Slot k's file index and line, from the packer's leaf order (its orders moved here).
+SlotSources slotSources(FileLines lines, PackedScene& packed) {
+    SlotSources sources;
+    sources.sphereIndex = std::move(packed.sphereOrder);
+    for (std::uint32_t index : sources.sphereIndex)
+        sources.sphereLine.push_back(lines.spheres[index]);
+    sources.triangleIndex = std::move(packed.triangleOrder);
+    sources.triangleLine.reserve(sources.triangleIndex.size());
+    for (std::uint32_t index : sources.triangleIndex)
+        sources.triangleLine.push_back(lines.triangles[index]);
+    sources.lightLine = std::move(lines.lights);
     return sources;
+}
+
+// What the renderer's packed copy replaces: the scene's triangles, meshes and textures.
+void releaseGeometry(Scene& scene) {
+    scene.triangles = {};
+    scene.meshes = {};
+    scene.textures = {};
 }
 
 // For a dispatch of workgroupRows rows of workgroups whose first pixel is (dispatchX, dispatchY).
@@ -239,10 +260,11 @@ void createOutput(Renderer& renderer, const Context& context, std::uint32_t widt
 
     createAccumulation(renderer, context);
 }
-} // namespace
-
-void createRenderer(Renderer& renderer, const Context& context, const Scene& scene,
-                    const RenderSettings& settings, KernelCache* kernels) {
+// createRenderer, with onPacked() called once the scene is packed, before the hierarchy is
+// built: where createRendererReleasingGeometry lets the scene's geometry go.
+void createRendererFrom(Renderer& renderer, const Context& context, const Scene& scene,
+                        const RenderSettings& settings, KernelCache* kernels,
+                        const std::function<void()>& onPacked) {
     OnFailure release([&] { destroyRenderer(renderer, context); });
     renderer.settings = settings;
     if (settings.floatOutput && settings.progressive)
@@ -251,9 +273,16 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
     if (precision == Precision::Fp64 && !context.float64Enabled)
         throw std::logic_error("--precision fp64, but the device was created without shaderFloat64 "
                                "(createDevice needFloat64)");
-    PackedScene packed = packScene(scene, settings.acceleration, precision);
+    PackedScene packed;
+    {
+        const PhaseTimer timer("pack");
+        packed = packSceneInFileOrder(scene, precision);
+    }
+    FileLines lines = fileLines(scene);
+    onPacked(); // the scene's geometry may go
+    arrangeForHierarchy(packed, settings.acceleration);
     note("%s\n", accelerationSummary(packed.hierarchy).c_str());
-    renderer.sources = slotSources(scene, packed);
+    renderer.sources = slotSources(std::move(lines), packed);
     renderer.specialization = traceSpecialization(packed, settings);
     {
         const PhaseTimer timer("upload");
@@ -300,6 +329,19 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
         throw std::invalid_argument("a region's origin must lie within " +
                                     std::to_string(MAX_IMAGE_SIDE) + " pixels (GpuFrameParams)");
     createOutput(renderer, context, output.width, output.height);
+}
+
+} // namespace
+
+void createRenderer(Renderer& renderer, const Context& context, const Scene& scene,
+                    const RenderSettings& settings, KernelCache* kernels) {
+    createRendererFrom(renderer, context, scene, settings, kernels, [] {});
+}
+
+void createRendererReleasingGeometry(Renderer& renderer, const Context& context, Scene& scene,
+                                     const RenderSettings& settings, KernelCache* kernels) {
+    createRendererFrom(renderer, context, scene, settings, kernels,
+                       [&] { releaseGeometry(scene); });
 }
 
 TraceRegion outputRegion(const RenderSettings& settings) {

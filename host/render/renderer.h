@@ -111,6 +111,14 @@ struct Renderer {
 void createRenderer(Renderer& renderer, const Context& context, const Scene& scene,
                     const RenderSettings& settings, KernelCache* kernels = nullptr);
 
+// createRenderer for a caller that needs no more of the scene's geometry: its triangles,
+// meshes and textures are released once packed, before the hierarchy is built (a large
+// model's mesh is then not held beside the hierarchy's arrays and the GPU's copy: the
+// start-up's peak of memory). Its lights, camera and the rest stay.
+void createRendererReleasingGeometry(Renderer& renderer, const Context& context, Scene& scene,
+                                     const RenderSettings& settings,
+                                     KernelCache* kernels = nullptr);
+
 // The specialization constants for this packed scene and these settings: its primitive
 // kinds, hierarchy, whether any material has ks > 0, the method choices, and texel reads
 // unless --storage-reads (createRenderer turns them off where the device's limit does). With
