@@ -6,9 +6,9 @@
 
 namespace {
 
-// Arrays of trivially copyable values (positions, triangles with their optional normals)
-// go as their bytes, in one copy each: a model of millions of triangles crosses in
-// tenths of a second.
+// Arrays of trivially copyable values (positions, normals) go as their bytes, in one copy
+// each, the triangles a whole SourceTriangle each: a model of millions of triangles
+// crosses in tenths of a second.
 class Writer {
   public:
     template <typename T> void value(const T& v) {
@@ -82,7 +82,9 @@ std::string modelBytes(const SourceModel& model) {
     out.array(model.texcoords);
     out.array(model.facePositions);
     out.array(model.faceStarts);
-    out.array(model.triangles);
+    out.value<std::uint64_t>(model.triangles.size());
+    for (std::size_t t = 0; t < model.triangles.size(); ++t)
+        out.value(model.triangles[t]);
     out.value<std::uint64_t>(model.materials.size());
     for (const MeshMaterial& material : model.materials) {
         out.value(material.phong);
@@ -116,7 +118,10 @@ SourceModel modelFromBytes(std::string_view bytes) {
     model.texcoords = in.array<glm::dvec2>();
     model.facePositions = in.array<std::uint32_t>();
     model.faceStarts = in.array<std::size_t>();
-    model.triangles = in.array<SourceTriangle>();
+    const std::uint64_t triangles = in.count(sizeof(SourceTriangle));
+    model.triangles.reserve(triangles);
+    for (std::uint64_t t = 0; t < triangles; ++t)
+        model.triangles.push_back(in.value<SourceTriangle>());
     model.materials.resize(in.count(sizeof(Material) + 8 + 2 * sizeof(glm::dvec3)));
     for (MeshMaterial& material : model.materials) {
         material.phong = in.value<Material>();
@@ -147,7 +152,8 @@ SourceModel modelFromBytes(std::string_view bytes) {
         check(model.faceStarts[i - 1] <= model.faceStarts[i]);
     for (const std::uint32_t p : model.facePositions)
         check(p < model.positions.size());
-    for (const SourceTriangle& t : model.triangles) {
+    for (std::size_t k = 0; k < model.triangles.size(); ++k) {
+        const SourceTriangle t = model.triangles[k];
         for (const SourceCorner& corner : t.corners)
             check(corner.position < model.positions.size() &&
                   (corner.normal == kNoNormal || corner.normal < model.normals.size()) &&

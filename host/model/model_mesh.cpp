@@ -10,9 +10,8 @@ namespace {
 
 using namespace exact_vectors;
 
-bool isDegenerate(const std::vector<glm::dvec3>& positions, const SourceTriangle& triangle) {
-    const std::uint32_t a = triangle.corners[0].position, b = triangle.corners[1].position,
-                        c = triangle.corners[2].position;
+bool isDegenerate(const std::vector<glm::dvec3>& positions, const glm::uvec3& corners) {
+    const std::uint32_t a = corners[0], b = corners[1], c = corners[2];
     if (a == b || b == c || a == c) return true;
     return length(glm::cross(positions[b] - positions[a], positions[c] - positions[a])) == 0.0;
 }
@@ -88,10 +87,10 @@ std::vector<TriangleFate> triangleFates(const SourceModel& model,
     const std::vector<IndexRange> ranges = splitRange(fates.size(), 8192);
     parallelFor(ranges.size(), [&](std::size_t k) {
         for (std::size_t t = ranges[k].begin; t < ranges[k].end; ++t) {
-            const SourceTriangle& triangle = model.triangles[t];
-            fates[t] = !farFaces.empty() && farFaces[triangle.face] ? TriangleFate::far
-                       : isDegenerate(positions, triangle)          ? TriangleFate::degenerate
-                                                                    : TriangleFate::kept;
+            const SourceTriangles& source = model.triangles;
+            fates[t] = !farFaces.empty() && farFaces[source.face(t)]  ? TriangleFate::far
+                       : isDegenerate(positions, source.positions(t)) ? TriangleFate::degenerate
+                                                                      : TriangleFate::kept;
         }
     });
     return fates;
@@ -100,8 +99,9 @@ std::vector<TriangleFate> triangleFates(const SourceModel& model,
 bool needsSmoothNormals(const SourceModel& model, const std::vector<TriangleFate>& fates) {
     for (std::size_t t = 0; t < model.triangles.size(); ++t) {
         if (fates[t] != TriangleFate::kept) continue;
-        for (const SourceCorner& corner : model.triangles[t].corners)
-            if (corner.normal == kNoNormal) return true;
+        if (!model.triangles.anyNormal()) return true;
+        for (int c = 0; c < 3; ++c)
+            if (model.triangles.corner(t, c).normal == kNoNormal) return true;
     }
     return false;
 }
@@ -124,15 +124,14 @@ Mesh modelMesh(const SourceModel& model, const std::vector<glm::dvec3>& position
         parallelFor(ranges.size(), [&](std::size_t k) {
             for (std::size_t i = ranges[k].begin; i < ranges[k].end; ++i) {
                 if (fates[first + i] != TriangleFate::kept) continue;
-                const SourceTriangle& source = model.triangles[first + i];
+                const std::uint32_t face = model.triangles.face(first + i);
                 for (int c = 0; c < 3; ++c) {
-                    const SourceCorner& corner = source.corners[c];
+                    const SourceCorner corner = model.triangles.corner(first + i, c);
                     CornerKey& key = blockKeys[3 * i + c];
                     key.position = corner.position;
                     key.texcoord = corner.texcoord;
-                    key.normal = corner.normal != kNoNormal
-                                     ? normals[corner.normal]
-                                     : smooth->at(source.face, corner.position);
+                    key.normal = corner.normal != kNoNormal ? normals[corner.normal]
+                                                            : smooth->at(face, corner.position);
                 }
             }
         });
@@ -153,8 +152,8 @@ Mesh modelMesh(const SourceModel& model, const std::vector<glm::dvec3>& position
     mesh.triangleLines.reserve(kept);
     for (std::size_t t = 0; t < triangles; ++t) {
         if (fates[t] != TriangleFate::kept) continue;
-        mesh.triangleMaterials.push_back(model.triangles[t].material);
-        mesh.triangleLines.push_back(model.triangles[t].line);
+        mesh.triangleMaterials.push_back(model.triangles.material(t));
+        mesh.triangleLines.push_back(model.triangles.line(t));
     }
 
     // Each vertex's other attributes, from its position's and texture coordinates' indices;

@@ -5,6 +5,7 @@
 
 #include "base/parallel.h"
 #include "base/phase_progress.h"
+#include "base/release.h"
 #include "model/exact_vectors.h"
 #include "model/far_vertices.h"
 #include "model/model_fit.h"
@@ -73,8 +74,7 @@ std::pair<glm::dvec3, glm::dvec3> boxOf(const std::vector<glm::dvec3>& positions
 // triangles, and at least 20 of those nearest triangles turn their front (their winding's
 // side) to the centre. A closed solid encloses its centre too, but its faces turn their
 // backs to it. The same arithmetic as tools/obj_to_scene.py's.
-bool enclosesItsCentre(const std::vector<glm::dvec3>& positions,
-                       const std::vector<SourceTriangle>& triangles,
+bool enclosesItsCentre(const std::vector<glm::dvec3>& positions, const SourceTriangles& triangles,
                        const std::vector<TriangleFate>& fates, glm::dvec3 centre) {
     // The nearest triangle a ray meets, found on all threads: each range's first nearest,
     // the ranges combined in order, so that a tie goes to the first in file order as in one
@@ -95,10 +95,9 @@ bool enclosesItsCentre(const std::vector<glm::dvec3>& positions,
                     Nearest nearest;
                     for (std::size_t n = ranges[r].begin; n < ranges[r].end; ++n) {
                         if (fates[n] != TriangleFate::kept) continue;
-                        const SourceCorner* t = triangles[n].corners;
-                        const glm::dvec3 a = positions[t[0].position],
-                                         e1 = positions[t[1].position] - a,
-                                         e2 = positions[t[2].position] - a;
+                        const glm::uvec3& t = triangles.positions(n);
+                        const glm::dvec3 a = positions[t[0]], e1 = positions[t[1]] - a,
+                                         e2 = positions[t[2]] - a;
                         const glm::dvec3 p = glm::cross(d, e2);
                         const double det = dot(e1, p);
                         if (det == 0.0) continue;
@@ -301,15 +300,15 @@ Scene sceneFromModel(SourceModel model, const ModelSceneSetup& setup, const std:
         smooth.emplace(model, positions, setup.creaseDegrees, farFaces);
     // The model's arrays go as soon as they have served, for the phase's peak of memory: the
     // faces once the smooth normals are made, the triangles once the mesh is.
-    model.facePositions = {};
-    model.faceStarts = {};
-    farFaces = {};
+    release(model.facePositions);
+    release(model.faceStarts);
+    release(farFaces);
     const std::size_t triangleCount = model.triangles.size();
     Mesh mesh = modelMesh(model, positions, normals, fates, std::move(smooth),
                           {[&](const glm::dvec3& p) { return placement.place(p); },
                            [&](const glm::dvec3& n) { return placement.turn.apply(n); }},
                           &progress);
-    model.triangles = {};
+    model.triangles = SourceTriangles{};
     mesh.materials = model.materials;
     const auto farTriangles =
         static_cast<std::size_t>(std::count(fates.begin(), fates.end(), TriangleFate::far));

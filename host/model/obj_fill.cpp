@@ -222,8 +222,8 @@ class ChunkReader {
         const auto face = static_cast<std::uint32_t>(next_.faces++);
         model_.faceStarts[face + 1] = next_.facePositions;
         if (n == 3) { // the common case, without a polygon's work
-            model_.triangles[next_.triangles++] = {
-                {corners_[0], corners_[1], corners_[2]}, material_, face, line};
+            model_.triangles.set(next_.triangles++,
+                                 {{corners_[0], corners_[1], corners_[2]}, material_, face, line});
             return;
         }
         result_.polygons.push_back(
@@ -281,8 +281,10 @@ FannedConcave splitObjPolygons(const ObjChunkResult& chunk, SourceModel& model) 
         if (split.fannedConcave && fanned.count++ == 0) fanned.firstLine = polygon.line;
         std::size_t next = polygon.firstTriangle;
         for (const auto& [a, b, c] : split.triangles)
-            model.triangles[next++] = {
-                {corners[a], corners[b], corners[c]}, polygon.material, polygon.face, polygon.line};
+            model.triangles.set(next++, {{corners[a], corners[b], corners[c]},
+                                         polygon.material,
+                                         polygon.face,
+                                         polygon.line});
     }
     return fanned;
 }

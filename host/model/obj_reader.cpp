@@ -10,6 +10,7 @@
 
 #include "base/parallel.h"
 #include "base/populated_memory.h"
+#include "base/release.h"
 #include "model/model_paths.h"
 #include "model/obj_fill.h"
 #include "model/obj_survey.h"
@@ -102,7 +103,8 @@ void sizeArrays(SourceModel& model, const ObjChunkPlace& total) {
     resizePopulated(model.texcoords, total.texcoords);
     resizePopulated(model.facePositions, total.facePositions);
     resizePopulated(model.faceStarts, total.faces + 1);
-    resizePopulated(model.triangles, total.triangles);
+    // A corner may name a normal (texture coordinates) only when the file has some.
+    model.triangles.resize(total.triangles, total.normals > 0, total.texcoords > 0);
 }
 
 ObjChunkPlace operator+(ObjChunkPlace place, const ObjChunkSurvey& survey) {
@@ -189,7 +191,7 @@ SourceModel parseObj(std::string_view text, const std::string& fileName, const M
             [&](std::size_t k) {
                 for (const auto& [position, color] : read[k].colors)
                     model.colors[position] = color;
-                read[k].colors = {};
+                release(read[k].colors);
             },
             0);
     }

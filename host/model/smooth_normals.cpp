@@ -14,6 +14,16 @@ using namespace exact_vectors;
 constexpr double kPi = 3.141592653589793;
 constexpr std::size_t kNoFace = SIZE_MAX;
 
+// The crease test compares the faces' unit normals in double, as the rule says, but first
+// their float roundings: each component within 2^-24 of its own, so the two dot products
+// differ by under 2e-7. Only a pair this close to the crease angle is compared again in
+// double; every other pair is decided alike by both.
+constexpr double kCreaseMargin = 1e-6;
+
+double roundedDot(const glm::vec3& a, const glm::vec3& b) {
+    return double(a.x) * b.x + double(a.y) * b.y + double(a.z) * b.z;
+}
+
 // Newell's sum of cross products over a polygon: its normal scaled by twice its area, so
 // adding such sums weights faces by area; per polygon, so how a quad was split does not
 // tilt its corners' normals.
@@ -54,7 +64,7 @@ SmoothNormals::SmoothNormals(const SourceModel& model, const std::vector<glm::dv
     parallelFor(ranges.size(), [&](std::size_t k) {
         for (std::size_t f = ranges[k].begin; f < ranges[k].end; ++f) {
             newell_[f] = newellNormal(positions, facePositions(model, f), scale);
-            unit_[f] = normalizedOrZero(newell_[f]);
+            unit_[f] = glm::vec3(normalizedOrZero(newell_[f]));
         }
     });
     // The faces around each position in one array, each face once though its position
@@ -83,8 +93,15 @@ glm::dvec3 SmoothNormals::at(std::uint32_t face, std::uint32_t position) const {
     glm::dvec3 sum(0.0);
     for (std::size_t i = start_[position]; i < start_[position + 1]; ++i) {
         const std::uint32_t other = faces_[i];
-        if (everywhere_ || other == face || dot(unit_[face], unit_[other]) >= cosine_)
-            sum += newell_[other];
+        if (everywhere_ || other == face || withinCrease(face, other)) sum += newell_[other];
     }
     return normalizedOrZero(sum);
+}
+
+bool SmoothNormals::withinCrease(std::uint32_t face, std::uint32_t other) const {
+    const double rounded = roundedDot(unit_[face], unit_[other]);
+    if (rounded - cosine_ > kCreaseMargin) return true;
+    if (cosine_ - rounded > kCreaseMargin) return false;
+    return dot(normalizedOrZero(newell_[face]), normalizedOrZero(newell_[other])) >=
+           cosine_; // NaN comes here too
 }

@@ -22,9 +22,15 @@ class SmoothNormals {
     glm::dvec3 at(std::uint32_t face, std::uint32_t position) const;
 
   private:
+    // Whether face other's unit normal is within the crease angle of face's.
+    bool withinCrease(std::uint32_t face, std::uint32_t other) const;
+
     double cosine_;
     bool everywhere_;
-    std::vector<glm::dvec3> newell_, unit_; // per face
+    std::vector<glm::dvec3> newell_; // per face
+    // Per face, its unit normal rounded to float, for the crease test (smooth_normals.cpp):
+    // 12 bytes a face rather than 24.
+    std::vector<glm::vec3> unit_;
     // The faces around position p: faces_[start_[p]] up to faces_[start_[p + 1]].
     std::vector<std::size_t> start_;
     std::vector<std::uint32_t> faces_;

@@ -3,6 +3,7 @@
 // one: OBJ's (obj_reader.h), PLY's, STL's and assimp's; its fields follow OBJ's statements.
 #pragma once
 
+#include "model/source_triangles.h"
 #include "scene/scene.h"
 
 #include <cstdint>
@@ -11,28 +12,6 @@
 #include <span>
 #include <string>
 #include <vector>
-
-// A corner's texcoord, and its normal, when its face gives none.
-inline constexpr std::uint32_t kNoTexcoord = UINT32_MAX;
-inline constexpr std::uint32_t kNoNormal = UINT32_MAX;
-
-// One corner of a face: indices into SourceModel's positions, normals and texcoords (0-based).
-// 12 bytes: the sentinels rather than std::optional, which took 8 bytes for the normal (a
-// triangle 64 bytes rather than 56, the largest of a model's arrays).
-struct SourceCorner {
-    std::uint32_t position = 0;
-    std::uint32_t normal = kNoNormal; // kNoNormal: the corner gets a smooth normal
-    std::uint32_t texcoord = kNoTexcoord;
-};
-
-// A triangle of a face's fan (a polygon is split from its first corner).
-struct SourceTriangle {
-    SourceCorner corners[3];
-    std::uint32_t material = 0; // into SourceModel::materials
-    std::uint32_t face = 0;     // the face (faceCount, facePositions) it was split from
-    std::int64_t line = 0;      // the face's line in the OBJ file
-};
-static_assert(sizeof(SourceTriangle) == 56);
 
 struct SourceModel {
     std::vector<glm::dvec3> positions;
@@ -47,7 +26,7 @@ struct SourceModel {
     // rather than a vector per face (which cost 56 bytes a face before its indices).
     std::vector<std::uint32_t> facePositions;
     std::vector<std::size_t> faceStarts{0};
-    std::vector<SourceTriangle> triangles;
+    SourceTriangles triangles;
     // materials[0] is the default one, for faces without a known material; each with the
     // diffuse texture its map_Kd names, if any (the path from the MTL file's folder).
     std::vector<MeshMaterial> materials;

@@ -82,6 +82,24 @@ def prism(sides=8):
 
 MODELS["cylinder"] = (prism(), None)
 
+
+# A fan of triangles about one edge, each tilted from the flat first one by the default
+# crease angle (60 degrees) give or take a few nanoradians: whether a face's normal counts at
+# a corner is decided in the last bits of the dot product of the two unit normals (their
+# float roundings alone decide some of them otherwise). The far corners spread along and
+# away from the edge, so that none is far beyond the rest.
+def near_crease(tilts=16):
+    lines = ["v 0 0 0", "v 1 0 0", "v 0 1 0"]
+    for k in range(tilts):
+        theta, reach = math.radians(60) + (k - tilts // 2) * 3e-9, 1 + k / tilts
+        lines.append("v %.17g %.17g %.17g" % (k / tilts, reach * math.cos(theta), reach * math.sin(theta)))
+    lines.append("f 1 2 3")
+    lines += ["f 1 2 %d" % (4 + k) for k in range(tilts)]
+    return "\n".join(lines) + "\n"
+
+
+MODELS["near_crease"] = (near_crease(), None)
+
 # MTL's illumination models on one prism each: glossy (illum 2: a highlight, no mirror),
 # mirror (illum 3), matte (illum 1), and Ns 0, which is read as 1.
 ILLUM_MTL = ("newmtl glossy\nKd 0.7 0.2 0.1\nKs 0.8\nNs 40\nillum 2\n"

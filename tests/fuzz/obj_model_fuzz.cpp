@@ -68,7 +68,8 @@ std::string describe(const Outcome& outcome) {
         for (const std::uint32_t position : facePositions(model, face))
             out << ' ' << position;
     }
-    for (const SourceTriangle& triangle : model.triangles) {
+    for (std::size_t t = 0; t < model.triangles.size(); ++t) {
+        const SourceTriangle triangle = model.triangles[t];
         out << "\ntriangle";
         for (const SourceCorner& corner : triangle.corners)
             out << ' ' << corner.position << '/' << corner.texcoord << '/'

@@ -2,6 +2,7 @@
 // named by its first bytes (PLY, STL, glTF, UTF-16 text), a material library that is
 // missing is one warning that says how many faces fell back to the default material, and
 // a concave face is split by ear clipping (its area kept, its holes open).
+#include "model/model_bytes.h"
 #include "model/obj_reader.h"
 #include "model/polygon_triangulation.h"
 #include "scene/file_format.h"
@@ -246,4 +247,55 @@ TEST(ModelInput, AConcaveFaceOutOfItsPlaneIsOneWarning) {
     ASSERT_EQ(model.warnings.size(), 1u);
     EXPECT_EQ(model.warnings[0], "m.obj:19: warning: 2 concave face(s) not in one plane, or "
                                  "crossing themselves, split as fans from their first corner");
+}
+
+// A model's triangles keep normal and texture coordinate indices only once some corner has
+// one; a corner before that has none, one after that keeps its own, and the model crosses
+// from a child process (model_bytes.h) as it was, first triangle included.
+TEST(SourceTriangles, NormalsAndTexcoordsAppearWithTheFirstCornerThatHasOne) {
+    SourceModel model;
+    model.positions.assign(4, glm::dvec3(0.0));
+    model.positionLines.assign(4, 1);
+    model.normals.assign(1, glm::dvec3(0.0, 0.0, 1.0));
+    model.texcoords.assign(3, glm::dvec2(0.5));
+    model.facePositions = {0, 1, 2, 0, 2, 3, 1, 2, 3};
+    model.faceStarts = {0, 3, 6, 9};
+    model.materials = {defaultModelMaterial()};
+    auto corner = [](std::uint32_t position, std::uint32_t normal, std::uint32_t texcoord) {
+        return SourceCorner{position, normal, texcoord};
+    };
+    model.triangles.push_back(
+        {{corner(0, kNoNormal, 0), corner(1, kNoNormal, 1), corner(2, kNoNormal, kNoTexcoord)},
+         0,
+         0,
+         7});
+    EXPECT_TRUE(model.triangles.anyTexcoord());
+    EXPECT_FALSE(model.triangles.anyNormal());
+    model.triangles.push_back(
+        {{corner(0, 0, kNoTexcoord), corner(2, kNoNormal, 2), corner(3, 0, 1)}, 0, 1, 8});
+    model.triangles.push_back(
+        {{corner(1, kNoNormal, kNoTexcoord), corner(2, kNoNormal, kNoTexcoord),
+          corner(3, kNoNormal, kNoTexcoord)},
+         0,
+         2,
+         9});
+    EXPECT_TRUE(model.triangles.anyNormal());
+    for (const SourceModel& read : {model, modelFromBytes(modelBytes(model))}) {
+        ASSERT_EQ(read.triangles.size(), 3u);
+        const SourceTriangle first = read.triangles[0], second = read.triangles[1],
+                             third = read.triangles[2];
+        EXPECT_EQ(first.corners[0].texcoord, 0u);
+        EXPECT_EQ(first.corners[1].texcoord, 1u);
+        EXPECT_EQ(first.corners[2].texcoord, kNoTexcoord);
+        EXPECT_EQ(first.corners[0].normal, kNoNormal);
+        EXPECT_EQ(second.corners[0].normal, 0u);
+        EXPECT_EQ(second.corners[1].normal, kNoNormal);
+        EXPECT_EQ(second.corners[2].normal, 0u);
+        EXPECT_EQ(second.corners[2].texcoord, 1u);
+        EXPECT_EQ(third.corners[2].position, 3u);
+        EXPECT_EQ(third.corners[2].normal, kNoNormal);
+        EXPECT_EQ(third.corners[2].texcoord, kNoTexcoord);
+        EXPECT_EQ(second.face, 1u);
+        EXPECT_EQ(third.line, 9);
+    }
 }

@@ -27,9 +27,10 @@ std::string outcome(const std::string& text, unsigned chunks) {
         const SourceModel model = parseObj(text, "m.obj", lookUp, ObjParseOptions{chunks, 1});
         std::string words = std::to_string(model.positions.size()) + " positions, " +
                             std::to_string(model.triangles.size()) + " triangles;";
-        for (const SourceTriangle& triangle : model.triangles)
-            words += " " + std::to_string(triangle.corners[2].position) + "@" +
-                     std::to_string(triangle.line) + "m" + std::to_string(triangle.material);
+        for (std::size_t t = 0; t < model.triangles.size(); ++t)
+            words += " " + std::to_string(model.triangles.positions(t)[2]) + "@" +
+                     std::to_string(model.triangles.line(t)) + "m" +
+                     std::to_string(model.triangles.material(t));
         for (const std::string& warning : model.warnings)
             words += "\n" + warning;
         return words;
