@@ -8,6 +8,7 @@
 
 #include "base/deduplicator.h"
 #include "base/parallel.h"
+#include "base/release.h"
 
 #include <bit>
 #include <cstdint>
@@ -52,7 +53,7 @@ OrderedDedup orderedDedup(std::size_t count, const ValueAt& valueAt) {
         for (std::size_t i = blocks[b].begin; i < blocks[b].end; ++i)
             order[next[hashes[i] >> (64 - kShardBits)]++] = std::uint32_t(i);
     });
-    perShard = {};
+    release(perShard);
 
     // first[i]: the first value of the sequence equal to value i.
     std::vector<std::uint32_t> first(count);
@@ -78,8 +79,8 @@ OrderedDedup orderedDedup(std::size_t count, const ValueAt& valueAt) {
             if (first[i] == i) slots[slot] = i + 1;
         }
     });
-    order = {};
-    hashes = {};
+    release(order);
+    release(hashes);
 
     // The first appearances ranked in sequence order, then every value given its first's.
     std::vector<std::uint32_t> firstsBefore(blocks.size() + 1, 0);

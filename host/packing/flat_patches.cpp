@@ -39,23 +39,21 @@ struct Patches {
     }
 };
 
-} // namespace
-
-std::vector<std::uint32_t> flatPatches(const std::vector<glm::dvec3>& positions,
-                                       const std::vector<std::uint32_t>& triangleVertices) {
-    const std::size_t triangleCount = triangleVertices.size() / 3;
+// cornerAt(t, k): the index into positions of triangle t's corner k.
+template <typename CornerAt>
+std::vector<std::uint32_t> patchesOf(const std::vector<glm::dvec3>& positions,
+                                     std::size_t triangleCount, const CornerAt& cornerAt) {
     std::vector<Plane> planes(triangleCount);
     for (std::size_t t = 0; t < triangleCount; ++t)
-        planes[t] =
-            planeOf(positions[triangleVertices[3 * t]], positions[triangleVertices[3 * t + 1]],
-                    positions[triangleVertices[3 * t + 2]]);
+        planes[t] = planeOf(positions[cornerAt(t, 0)], positions[cornerAt(t, 1)],
+                            positions[cornerAt(t, 2)]);
     // Whether every corner of each triangle lies in the other's plane (both ways, so that a
     // sliver's ill-determined normal cannot join a triangle it is not flat with).
     auto liesIn = [&](std::size_t t, std::size_t u) {
         const Plane& plane = planes[u];
         for (std::size_t k = 0; k < 3; ++k) {
             const double distance =
-                glm::dot(plane.normal, positions[triangleVertices[3 * t + k]]) - plane.offset;
+                glm::dot(plane.normal, positions[cornerAt(t, k)]) - plane.offset;
             if (!(std::abs(distance) <= std::max(plane.tolerance, planes[t].tolerance)))
                 return false;
         }
@@ -68,13 +66,15 @@ std::vector<std::uint32_t> flatPatches(const std::vector<glm::dvec3>& positions,
 
     // The triangles at each vertex (counting sort by vertex index).
     std::vector<std::uint32_t> firstAt(positions.size() + 1, 0);
-    for (std::uint32_t v : triangleVertices)
-        ++firstAt[v + 1];
+    for (std::size_t t = 0; t < triangleCount; ++t)
+        for (int k = 0; k < 3; ++k)
+            ++firstAt[cornerAt(t, k) + 1];
     std::partial_sum(firstAt.begin(), firstAt.end(), firstAt.begin());
-    std::vector<std::uint32_t> trianglesAt(triangleVertices.size());
+    std::vector<std::uint32_t> trianglesAt(3 * triangleCount);
     std::vector<std::uint32_t> filled(firstAt.begin(), firstAt.end() - 1);
-    for (std::size_t i = 0; i < triangleVertices.size(); ++i)
-        trianglesAt[filled[triangleVertices[i]]++] = std::uint32_t(i / 3);
+    for (std::size_t t = 0; t < triangleCount; ++t)
+        for (int k = 0; k < 3; ++k)
+            trianglesAt[filled[cornerAt(t, k)]++] = std::uint32_t(t);
 
     Patches patches;
     patches.parent.resize(triangleCount);
@@ -98,4 +98,20 @@ std::vector<std::uint32_t> flatPatches(const std::vector<glm::dvec3>& positions,
     for (std::uint32_t t = 0; t < triangleCount; ++t)
         patchOf[t] = patches.find(t);
     return patchOf;
+}
+
+} // namespace
+
+std::vector<std::uint32_t> flatPatches(const std::vector<glm::dvec3>& positions,
+                                       const std::vector<std::uint32_t>& triangleVertices) {
+    return patchesOf(positions, triangleVertices.size() / 3, [&](std::size_t t, int k) {
+        return triangleVertices[3 * t + std::size_t(k)];
+    });
+}
+
+std::vector<std::uint32_t> flatPatches(const std::vector<glm::dvec3>& positions,
+                                       const std::vector<glm::uvec4>& triangles,
+                                       const std::vector<std::uint32_t>& positionOf) {
+    return patchesOf(positions, triangles.size(),
+                     [&](std::size_t t, int k) { return positionOf[triangles[t][k]]; });
 }

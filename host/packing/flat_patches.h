@@ -20,6 +20,12 @@
 std::vector<std::uint32_t> flatPatches(const std::vector<glm::dvec3>& positions,
                                        const std::vector<std::uint32_t>& triangleVertices);
 
+// The same, triangle t's corners being positions[positionOf[triangles[t][k]]] (k < 3): the
+// packer's triangles, whose vertices share positions, without an array of their corners.
+std::vector<std::uint32_t> flatPatches(const std::vector<glm::dvec3>& positions,
+                                       const std::vector<glm::uvec4>& triangles,
+                                       const std::vector<std::uint32_t>& positionOf);
+
 // 2^-20 of a coordinate: 16 float ULPs, so vertices written as coplanar in the scene file
 // stay coplanar after their rounding to float.
 constexpr double kFlatTolerance = 1.0 / 1048576.0;

@@ -5,6 +5,7 @@
 #include "base/parallel.h"
 #include "base/phase_progress.h"
 #include "base/populated_memory.h"
+#include "base/release.h"
 #include "base/startup_phases.h"
 #include "packing/flat_patches.h"
 #include "scene/scene_triangles.h"
@@ -151,15 +152,40 @@ std::vector<gpu::GpuMaterialTexture> packTextures(const std::vector<Texture>& te
 
 } // namespace
 
-PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
+struct PackingInput {
+    PackingInput(std::size_t candidateBound, bool textured, bool fp64)
+        : textured(textured), fp64(fp64), candidates(candidateBound, textured, fp64) {}
+    bool textured, fp64;
+    PackedScene packed; // all but the triangles and vertices
+    std::vector<PackedMaterial> materials;
+    Candidates candidates;
+    std::vector<std::uint32_t> cornersOfTriangles; // each triangle's three candidates
+};
+
+void PackingInputDeleter::operator()(PackingInput* input) const {
+    delete input;
+}
+
+PackingInputPtr readForPacking(const Scene& scene, Precision precision) {
     const bool fp64 = precision == Precision::Fp64;
-    PackedScene packed;
+    const bool textured = !scene.textures.empty();
+    // The scene file's triangles, then each mesh's (scene_triangles.h's numbering). Every
+    // corner that may make a vertex is a candidate, in order; finishPacking then
+    // deduplicates them on all threads (orderedDedup: the indices of Deduplicator called on
+    // them in turn), as vertices (whole) and as corners (their positions alone, whatever
+    // their normals and materials: what the flat patches join triangles through).
+    std::size_t candidateBound = 3 * scene.triangles.size();
+    for (const Mesh& mesh : scene.meshes)
+        candidateBound += mesh.positions.size();
+    PackingInputPtr input(new PackingInput(candidateBound, textured, fp64));
+    PackedScene& packed = input->packed;
+    Candidates& candidates = input->candidates;
+    std::vector<std::uint32_t>& cornersOfTriangles = input->cornersOfTriangles;
     packed.ambient = toVec4(scene.ambient);
+    packed.lights = packLights(scene.lights);
     const std::vector<gpu::GpuMaterialTexture> texturePlacements =
         packTextures(scene.textures, packed.texturePixels);
-    const bool textured = !scene.textures.empty();
-    std::vector<PackedMaterial> packedMaterials;
-    Deduplicator<PackedMaterial> materials(packedMaterials, 64);
+    Deduplicator<PackedMaterial> materials(input->materials, 64);
     // Neighbouring vertices often share a material: compare with the last one first.
     PackedMaterial lastMaterial{};
     std::uint32_t lastMaterialIndex = UINT32_MAX;
@@ -182,21 +208,8 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
         if (fp64) packed.spheres64.push_back(glm::dvec4(sphere.center, sphere.radius));
     }
 
-    // The scene file's triangles, then each mesh's (scene_triangles.h's numbering). Every
-    // corner that may make a vertex is a candidate, in order; the candidates are then
-    // deduplicated on all threads (orderedDedup: the indices of Deduplicator called on them
-    // in turn), as vertices (whole) and as corners (their positions alone, whatever their
-    // normals and materials: what the flat patches join triangles through).
     const std::size_t triangles = triangleCount(scene);
-    std::size_t candidateBound = 3 * scene.triangles.size();
-    for (const Mesh& mesh : scene.meshes)
-        candidateBound += mesh.positions.size();
-    // The distinct vertices are compacted into it at the end.
-    Candidates candidates(candidateBound, textured, fp64);
-    // Until the deduplication, a triangle's x, y, z and a corner are candidates' numbers.
-    std::vector<std::uint32_t> cornersOfTriangles;
     cornersOfTriangles.reserve(3 * triangles);
-    packed.triangles.reserve(triangles);
     auto candidate = [&](const Vertex& vertex, std::int64_t texture, glm::dvec2 texcoord) {
         PackedVertex packedVertex{};
         packedVertex.position = toVec4(vertex.position);
@@ -206,14 +219,9 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
         if (fp64) packedVertex.exactPosition = glm::dvec4(vertex.position, 0.0);
         return candidates.add(packedVertex);
     };
-    for (const Triangle& triangle : scene.triangles) {
-        glm::uvec4 packedTriangle(0u);
-        for (int k = 0; k < 3; ++k) {
-            packedTriangle[k] = candidate(triangle.vertices[k], -1, glm::dvec2(0.0));
-            cornersOfTriangles.push_back(packedTriangle[k]);
-        }
-        packed.triangles.push_back(packedTriangle);
-    }
+    for (const Triangle& triangle : scene.triangles)
+        for (int k = 0; k < 3; ++k)
+            cornersOfTriangles.push_back(candidate(triangle.vertices[k], -1, glm::dvec2(0.0)));
     // A mesh's corner packs the same as any earlier corner of its vertex whose triangle has
     // the same material: that one's candidate stands for it, rather than one a corner.
     struct PackedCorner {
@@ -227,7 +235,6 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
         packedCorners.assign(mesh.positions.size(), PackedCorner{});
         for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
             if (t % 65536 == 65535) progress.advance(65536);
-            glm::uvec4 packedTriangle(0u);
             const auto texture = triangleTexture(mesh, t);
             for (int k = 0; k < 3; ++k) {
                 const std::uint32_t v = mesh.triangles[t][k];
@@ -238,45 +245,51 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
                         texture ? std::int64_t(*texture) : -1, vertexTexcoord(mesh, v));
                     done.material = mesh.triangleMaterials[t];
                 }
-                packedTriangle[k] = done.candidate;
                 cornersOfTriangles.push_back(done.candidate);
             }
-            packed.triangles.push_back(packedTriangle);
         }
     }
-    packedCorners = {};
-    // The position the GPU computes with: rounded to float in fp32.
-    auto cornerOf = [&](std::size_t c) {
-        const PackedVertex vertex = candidates[c];
-        return fp64 ? glm::dvec4(glm::dvec3(vertex.exactPosition), 0.0)
-                    : glm::dvec4(glm::dvec3(glm::vec3(vertex.position)), 0.0);
-    };
-    OrderedDedup cornerIndices = orderedDedup<glm::dvec4>(candidates.size(), cornerOf);
-    std::vector<glm::dvec3> cornerPositions(cornerIndices.firstOf.size());
-    const std::vector<IndexRange> blocks = splitRange(cornersOfTriangles.size(), 1 << 16);
-    parallelFor(blocks.size(), [&](std::size_t b) {
-        for (std::size_t k = blocks[b].begin; k < blocks[b].end; ++k)
-            cornersOfTriangles[k] = cornerIndices.indexOf[cornersOfTriangles[k]];
-    });
-    for (std::size_t k = 0; k < cornerPositions.size(); ++k)
-        cornerPositions[k] = glm::dvec3(cornerOf(cornerIndices.firstOf[k]));
-    cornerIndices = {};
-    const std::vector<std::uint32_t> patches = flatPatches(cornerPositions, cornersOfTriangles);
-    cornerPositions = {};
-    cornersOfTriangles = {};
-    OrderedDedup vertexIndices =
-        orderedDedup<PackedVertex>(candidates.size(), [&](std::size_t c) { return candidates[c]; });
-    const std::vector<IndexRange> triangleBlocks = splitRange(packed.triangles.size(), 1 << 16);
-    parallelFor(triangleBlocks.size(), [&](std::size_t b) {
-        for (std::size_t t = triangleBlocks[b].begin; t < triangleBlocks[b].end; ++t) {
-            glm::uvec4& triangle = packed.triangles[t];
-            triangle =
-                glm::uvec4(vertexIndices.indexOf[triangle.x], vertexIndices.indexOf[triangle.y],
-                           vertexIndices.indexOf[triangle.z], patches[t]);
-        }
-    });
-    candidates.keep(vertexIndices.firstOf);
-    vertexIndices = {};
+    return input;
+}
+
+PackedScene finishPacking(PackingInputPtr input) {
+    const bool fp64 = input->fp64, textured = input->textured;
+    PackedScene packed = std::move(input->packed);
+    Candidates& candidates = input->candidates;
+    // The vertices first: each triangle's from its candidates, which then go.
+    {
+        const std::vector<std::uint32_t>& corners = input->cornersOfTriangles;
+        const OrderedDedup vertexIndices = orderedDedup<PackedVertex>(
+            candidates.size(), [&](std::size_t c) { return candidates[c]; });
+        resizePopulated(packed.triangles, corners.size() / 3);
+        const std::vector<IndexRange> blocks = splitRange(packed.triangles.size(), 1 << 16);
+        parallelFor(blocks.size(), [&](std::size_t b) {
+            for (std::size_t t = blocks[b].begin; t < blocks[b].end; ++t)
+                packed.triangles[t] = glm::uvec4(vertexIndices.indexOf[corners[3 * t]],
+                                                 vertexIndices.indexOf[corners[3 * t + 1]],
+                                                 vertexIndices.indexOf[corners[3 * t + 2]], 0u);
+        });
+        release(input->cornersOfTriangles);
+        candidates.keep(vertexIndices.firstOf);
+    }
+    // The flat patches, through the vertices' positions (the float ones in fp32, which the
+    // GPU computes with): equal positions are one corner. The vertices' first appearances
+    // are their candidates' in order, so the corners are numbered as among the candidates.
+    {
+        auto cornerOf = [&](std::size_t v) {
+            const PackedVertex vertex = candidates[v];
+            return fp64 ? glm::dvec4(glm::dvec3(vertex.exactPosition), 0.0)
+                        : glm::dvec4(glm::dvec3(glm::vec3(vertex.position)), 0.0);
+        };
+        const OrderedDedup cornerIndices = orderedDedup<glm::dvec4>(candidates.size(), cornerOf);
+        std::vector<glm::dvec3> cornerPositions(cornerIndices.firstOf.size());
+        for (std::size_t k = 0; k < cornerPositions.size(); ++k)
+            cornerPositions[k] = glm::dvec3(cornerOf(cornerIndices.firstOf[k]));
+        const std::vector<std::uint32_t> patches =
+            flatPatches(cornerPositions, packed.triangles, cornerIndices.indexOf);
+        for (std::size_t t = 0; t < packed.triangles.size(); ++t)
+            packed.triangles[t].w = patches[t];
+    }
     packed.vertexPositions.reserve(candidates.size());
     packed.vertexNormals.reserve(3 * candidates.size());
     // 28 bytes a vertex: the material index rides in the position's unused w, and the
@@ -292,13 +305,15 @@ PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
                 glm::dvec4(glm::dvec3(vertex.exactPosition), double(vertex.material)));
         if (textured) packed.vertexTexcoords.push_back(vertex.texcoord);
     }
-    for (const PackedMaterial& material : packedMaterials) {
+    for (const PackedMaterial& material : input->materials) {
         packed.materials.push_back(material.phong);
         if (textured) packed.materialTextures.push_back(material.texture);
     }
-
-    packed.lights = packLights(scene.lights);
     return packed;
+}
+
+PackedScene packSceneInFileOrder(const Scene& scene, Precision precision) {
+    return finishPacking(readForPacking(scene, precision));
 }
 
 std::vector<gpu::GpuLight> packLights(const std::vector<Light>& lights) {

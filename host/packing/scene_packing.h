@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -99,8 +100,20 @@ PackedScene packScene(const Scene& scene, Acceleration acceleration, Precision p
 void arrangeForHierarchy(PackedScene& packed, Acceleration acceleration);
 
 // The first step of packScene: spheres and triangles in file order, materials and
-// vertices shared; no hierarchy.
+// vertices shared; no hierarchy. finishPacking(readForPacking(scene, precision)).
 PackedScene packSceneInFileOrder(const Scene& scene, Precision precision = Precision::Fp32);
+
+// packSceneInFileOrder in two halves, for a caller that lets the scene's geometry go
+// between them (createRendererReleasingGeometry): readForPacking takes all that packing
+// needs of the scene (its corners as candidate vertices, its spheres, materials, textures
+// and lights), and finishPacking makes the packed scene of that alone.
+struct PackingInput; // scene_packing.cpp's
+struct PackingInputDeleter {
+    void operator()(PackingInput* input) const;
+};
+using PackingInputPtr = std::unique_ptr<PackingInput, PackingInputDeleter>;
+PackingInputPtr readForPacking(const Scene& scene, Precision precision);
+PackedScene finishPacking(PackingInputPtr input);
 
 // The lights as the GPU holds them (position, colour), in order.
 std::vector<gpu::GpuLight> packLights(const std::vector<Light>& lights);

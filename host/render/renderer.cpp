@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include "base/notes.h"
+#include "base/release.h"
 #include "base/scope_guard.h"
 #include "base/startup_phases.h"
 #include "gpu/vk_check.h"
@@ -111,9 +112,9 @@ SlotSources slotSources(FileLines lines, PackedScene& packed) {
 
 // What the renderer's packed copy replaces: the scene's triangles, meshes and textures.
 void releaseGeometry(Scene& scene) {
-    scene.triangles = {};
-    scene.meshes = {};
-    scene.textures = {};
+    release(scene.triangles);
+    release(scene.meshes);
+    release(scene.textures);
 }
 
 // For a dispatch of workgroupRows rows of workgroups whose first pixel is (dispatchX, dispatchY).
@@ -260,8 +261,8 @@ void createOutput(Renderer& renderer, const Context& context, std::uint32_t widt
 
     createAccumulation(renderer, context);
 }
-// createRenderer, with onPacked() called once the scene is packed, before the hierarchy is
-// built: where createRendererReleasingGeometry lets the scene's geometry go.
+// createRenderer, with onPacked() called once packing has read all it needs of the scene
+// (readForPacking): where createRendererReleasingGeometry lets the scene's geometry go.
 void createRendererFrom(Renderer& renderer, const Context& context, const Scene& scene,
                         const RenderSettings& settings, KernelCache* kernels,
                         const std::function<void()>& onPacked) {
@@ -273,22 +274,24 @@ void createRendererFrom(Renderer& renderer, const Context& context, const Scene&
     if (precision == Precision::Fp64 && !context.float64Enabled)
         throw std::logic_error("--precision fp64, but the device was created without shaderFloat64 "
                                "(createDevice needFloat64)");
+    FileLines lines = fileLines(scene);
     PackedScene packed;
     {
         const PhaseTimer timer("pack");
-        packed = packSceneInFileOrder(scene, precision);
+        PackingInputPtr input = readForPacking(scene, precision);
+        onPacked(); // the scene's geometry may go: packing needs no more of it
+        packed = finishPacking(std::move(input));
     }
-    FileLines lines = fileLines(scene);
-    onPacked(); // the scene's geometry may go
     arrangeForHierarchy(packed, settings.acceleration);
     note("%s\n", accelerationSummary(packed.hierarchy).c_str());
     renderer.sources = slotSources(std::move(lines), packed);
     renderer.specialization = traceSpecialization(packed, settings);
     {
         const PhaseTimer timer("upload");
-        renderer.scene = uploadScene(context, packed, renderer.specialization.texelReads);
+        // packed's arrays go as they are written: the GPU holds them now.
+        renderer.scene =
+            uploadScene(context, std::move(packed), renderer.specialization.texelReads);
     }
-    packed = PackedScene{}; // the GPU holds it now
     // The upload turns texel reads off for an array beyond maxTexelBufferElements.
     renderer.specialization.texelReads = renderer.scene.texelReads;
     if (!renderer.scene.storageReadsNote.empty())

@@ -112,8 +112,8 @@ void createRenderer(Renderer& renderer, const Context& context, const Scene& sce
                     const RenderSettings& settings, KernelCache* kernels = nullptr);
 
 // createRenderer for a caller that needs no more of the scene's geometry: its triangles,
-// meshes and textures are released once packed, before the hierarchy is built (a large
-// model's mesh is then not held beside the hierarchy's arrays and the GPU's copy: the
+// meshes and textures are released as soon as packing has read them (a large model's mesh
+// is then not held beside the packer's and the hierarchy's arrays and the GPU's copy: the
 // start-up's peak of memory). Its lights, camera and the rest stay.
 void createRendererReleasingGeometry(Renderer& renderer, const Context& context, Scene& scene,
                                      const RenderSettings& settings,

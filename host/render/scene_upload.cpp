@@ -1,5 +1,6 @@
 #include "render/scene_upload.h"
 
+#include "base/release.h"
 #include "base/scope_guard.h"
 #include "gpu/vk_check.h"
 #include "render/bindings.h"
@@ -21,6 +22,29 @@ struct ArrayView {
     std::function<void(void* destination)> write;
 };
 
+// The bindings in the order their arrays are written: those whose sources go first first,
+// the hierarchy's nodes (their own array), then the triangles' arrays (the triangles go
+// after the second, the vertices after the third).
+constexpr std::uint32_t kWriteOrder[] = {
+    BINDING_BVH_NODES,         BINDING_TRIANGLE_CORNERS, BINDING_TRIANGLE_LAST_VERTICES,
+    BINDING_VERTEX_NORMALS,    BINDING_SPHERES,          BINDING_SPHERE_MATERIALS,
+    BINDING_MATERIALS,         BINDING_LIGHTS,           BINDING_VERTEX_TEXCOORDS,
+    BINDING_MATERIAL_TEXTURES, BINDING_TEXTURE_PIXELS,
+};
+
+// packed's large arrays that no array still to be written is made of, released.
+void releaseWritten(const bool (&written)[BINDING_COUNT], PackedScene& packed) {
+    if (written[BINDING_BVH_NODES]) release(packed.bvhNodes);
+    if (written[BINDING_TRIANGLE_CORNERS] && written[BINDING_TRIANGLE_LAST_VERTICES])
+        release(packed.triangles);
+    if (written[BINDING_TRIANGLE_CORNERS] && written[BINDING_VERTEX_NORMALS]) {
+        release(packed.vertexNormals);
+        release(packed.vertexPositions);
+        release(packed.vertexPositions64);
+    }
+    if (written[BINDING_TEXTURE_PIXELS]) release(packed.texturePixels);
+}
+
 template <typename T> ArrayView view(std::uint32_t binding, const std::vector<T>& values) {
     return {binding, values.size() * sizeof(T), [&values](void* destination) {
                 std::memcpy(destination, values.data(), values.size() * sizeof(T));
@@ -37,9 +61,9 @@ VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
     return (value + alignment - 1) / alignment * alignment;
 }
 
-} // namespace
-
-GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wantTexelReads) {
+// Both uploadScenes; released: packed, when its arrays go as they are written.
+GpuScene upload(const Context& context, const PackedScene& packed, bool wantTexelReads,
+                PackedScene* released) {
     // fp64: the double arrays take the place of the float ones (shaders/precision.glsl).
     const bool fp64 = !packed.spheres64.empty() || !packed.vertexPositions64.empty();
     // The triangle arrays are derived from the packed ones as they are written into the
@@ -60,6 +84,7 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
         view(BINDING_MATERIAL_TEXTURES, packed.materialTextures),
         view(BINDING_TEXTURE_PIXELS, packed.texturePixels),
     };
+    static_assert(std::size(kWriteOrder) == std::size(arrays));
     const VkPhysicalDeviceLimits& limits = context.properties.limits;
     const VkDeviceSize alignment = sceneArrayAlignment(limits, fp64);
     const VkDeviceSize maxRange = limits.maxStorageBufferRange;
@@ -124,9 +149,19 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
         placed[array.binding] = {sizes.size() - 1, sizes.back()};
         sizes.back() = alignUp(sizes.back() + array.bytes, alignment);
     }
+    scene.sphereCount = static_cast<std::uint32_t>(packed.spheres.size());
+    scene.triangleCount = static_cast<std::uint32_t>(packed.triangles.size());
+    scene.lightCount = static_cast<std::uint32_t>(packed.lights.size());
+    scene.ambient = packed.ambient;
     // Straight into each buffer's memory (or its staging copy): each array at its offset,
     // zeros in the shared slot and in each array's padding up to the next, so every byte is
     // written once (zeroing the whole buffer first wrote a large scene's twice).
+    const ArrayView* arrayOf[BINDING_COUNT]{};
+    bool written[BINDING_COUNT]{};
+    for (const ArrayView& array : arrays) {
+        arrayOf[array.binding] = &array;
+        written[array.binding] = array.bytes == 0;
+    }
     for (std::size_t k = 0; k < sizes.size(); ++k)
         scene.buffers.push_back(createFilledDeviceBuffer(
             context, sizes[k],
@@ -134,12 +169,15 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
             [&](void* destination) {
                 auto* bytes = static_cast<std::uint8_t*>(destination);
                 std::memset(bytes, 0, alignment);
-                for (const ArrayView& array : arrays) {
-                    const Place& place = placed[array.binding];
+                for (const std::uint32_t binding : kWriteOrder) {
+                    const ArrayView& array = *arrayOf[binding];
+                    const Place& place = placed[binding];
                     if (!array.bytes || place.buffer != k) continue;
                     const VkDeviceSize end = place.offset + array.bytes;
                     array.write(bytes + place.offset);
                     std::memset(bytes + end, 0, alignUp(end, alignment) - end);
+                    written[binding] = true;
+                    if (released) releaseWritten(written, *released);
                 }
             }));
     for (const ArrayView& array : arrays) {
@@ -167,10 +205,18 @@ GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wan
         scene.bytes += size;
     for (const ArrayView& array : arrays)
         if (kBindings[array.binding].textureData) scene.textureBytes += array.bytes;
-    scene.sphereCount = static_cast<std::uint32_t>(packed.spheres.size());
-    scene.triangleCount = static_cast<std::uint32_t>(packed.triangles.size());
-    scene.lightCount = static_cast<std::uint32_t>(packed.lights.size());
-    scene.ambient = packed.ambient;
+    return scene;
+}
+
+} // namespace
+
+GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wantTexelReads) {
+    return upload(context, packed, wantTexelReads, nullptr);
+}
+
+GpuScene uploadScene(const Context& context, PackedScene&& packed, bool wantTexelReads) {
+    GpuScene scene = upload(context, packed, wantTexelReads, &packed);
+    packed = PackedScene{};
     return scene;
 }
 

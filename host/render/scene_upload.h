@@ -33,6 +33,11 @@ struct GpuScene {
 // device's when one is not read so, or when one exceeds maxMemoryAllocationSize.
 GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wantTexelReads = true);
 
+// The same, each of packed's arrays released as soon as the arrays made of it are written:
+// a large scene's packed copy is then not held whole beside the device's (lavapipe's device
+// memory is the host's) or a staging buffer. packed is left empty.
+GpuScene uploadScene(const Context& context, PackedScene&& packed, bool wantTexelReads = true);
+
 // Writes new lights over the uploaded ones, as many as before (an OBJ model's rig placed
 // for another camera): only the lights' range of the buffer is rewritten, and the kernel
 // and the rest of the scene stay. Waits for the device to be idle first, and until done.
