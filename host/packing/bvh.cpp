@@ -19,6 +19,7 @@
 
 #include "base/parallel.h"
 #include "base/phase_progress.h"
+#include "base/release.h"
 
 #include <algorithm>
 #include <array>
@@ -78,6 +79,13 @@ struct Subtree {
     std::uint32_t depth = 0;
 };
 
+// Room for the interior nodes of a subtree of n primitives, at most n - 1 (its leaves hold
+// one or more each), and for a lone leaf's root: address space, whose pages cost only once
+// written, so that no array of nodes grows by copying itself.
+void reserveNodes(std::vector<gpu::GpuBvhNode>& nodes, std::uint32_t n) {
+    nodes.reserve(std::size_t(n) + 1);
+}
+
 class Builder {
   public:
     Builder(const PrimitiveBounds& input, const BvhSettings& settings)
@@ -130,6 +138,8 @@ class Builder {
         Subtree leftTree, rightTree;
         if (depth < kParallelDepth && n >= kParallelMinimum && threads_ > 1) {
             std::vector<gpu::GpuBvhNode> leftNodes, rightNodes;
+            reserveNodes(leftNodes, left.size());
+            reserveNodes(rightNodes, right.size());
             parallelFor(
                 2,
                 [&](std::size_t side) {
@@ -140,6 +150,7 @@ class Builder {
                 },
                 2);
             splice(leftNodes, leftTree.child, out);
+            release(leftNodes);
             splice(rightNodes, rightTree.child, out);
         } else {
             leftTree = build(left, depth + 1, out);
@@ -362,8 +373,7 @@ Bvh buildBvh(const PrimitiveBounds& input, const BvhSettings& settings) {
         throw std::invalid_argument("buildBvh: " + std::to_string(n) +
                                     " primitives cannot fit in " +
                                     std::to_string(settings.maxDepth) + " levels");
-    // One interior node per leaf, less one; leaves are about half full.
-    bvh.nodes.reserve(n / std::max(settings.maxLeafSize / 2, 1u) + 1);
+    reserveNodes(bvh.nodes, std::uint32_t(n));
     const Subtree tree = builder.build(root, 0, bvh.nodes);
     bvh.depth = tree.depth;
     if (tree.child.leaf) {
