@@ -1,6 +1,9 @@
 #include "packing/flat_patches.h"
 
+#include "base/parallel.h"
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 
@@ -44,9 +47,12 @@ template <typename CornerAt>
 std::vector<std::uint32_t> patchesOf(const std::vector<glm::dvec3>& positions,
                                      std::size_t triangleCount, const CornerAt& cornerAt) {
     std::vector<Plane> planes(triangleCount);
-    for (std::size_t t = 0; t < triangleCount; ++t)
-        planes[t] = planeOf(positions[cornerAt(t, 0)], positions[cornerAt(t, 1)],
-                            positions[cornerAt(t, 2)]);
+    const std::vector<IndexRange> triangleRanges = splitRange(triangleCount, 16384);
+    parallelFor(triangleRanges.size(), [&](std::size_t r) {
+        for (std::size_t t = triangleRanges[r].begin; t < triangleRanges[r].end; ++t)
+            planes[t] = planeOf(positions[cornerAt(t, 0)], positions[cornerAt(t, 1)],
+                                positions[cornerAt(t, 2)]);
+    });
     // Whether every corner of each triangle lies in the other's plane (both ways, so that a
     // sliver's ill-determined normal cannot join a triangle it is not flat with).
     auto liesIn = [&](std::size_t t, std::size_t u) {
@@ -76,23 +82,40 @@ std::vector<std::uint32_t> patchesOf(const std::vector<glm::dvec3>& positions,
         for (int k = 0; k < 3; ++k)
             trianglesAt[filled[cornerAt(t, k)]++] = std::uint32_t(t);
 
+    // The joins at a vertex follow from the planes alone, not from the joins before them,
+    // so the vertices are visited on all threads, a batch of ranges at a time, and their
+    // joins made after each batch: a patch's number is its smallest triangle's (join keeps
+    // the smaller root), whatever order its triangles were joined in.
     Patches patches;
     patches.parent.resize(triangleCount);
     std::iota(patches.parent.begin(), patches.parent.end(), 0u);
-    for (std::size_t v = 0; v < positions.size(); ++v) {
-        std::uint32_t representatives[kPlanesPerVertex];
-        int planeCount = 0;
-        for (std::uint32_t at = firstAt[v]; at < firstAt[v + 1]; ++at) {
-            const std::uint32_t t = trianglesAt[at];
-            if (planes[t].tolerance == 0.0) continue;
-            int k = 0;
-            while (k < planeCount && !flat(t, representatives[k]))
-                ++k;
-            if (k < planeCount)
-                patches.join(t, representatives[k]);
-            else if (planeCount < kPlanesPerVertex)
-                representatives[planeCount++] = t;
-        }
+    const std::vector<IndexRange> vertexRanges = splitRange(positions.size(), 16384);
+    constexpr std::size_t kRangesABatch = 64;
+    std::vector<std::vector<std::array<std::uint32_t, 2>>> joins(kRangesABatch);
+    for (std::size_t first = 0; first < vertexRanges.size(); first += kRangesABatch) {
+        const std::size_t count = std::min(kRangesABatch, vertexRanges.size() - first);
+        parallelFor(count, [&](std::size_t i) {
+            joins[i].clear();
+            for (std::size_t v = vertexRanges[first + i].begin; v < vertexRanges[first + i].end;
+                 ++v) {
+                std::uint32_t representatives[kPlanesPerVertex];
+                int planeCount = 0;
+                for (std::uint32_t at = firstAt[v]; at < firstAt[v + 1]; ++at) {
+                    const std::uint32_t t = trianglesAt[at];
+                    if (planes[t].tolerance == 0.0) continue;
+                    int k = 0;
+                    while (k < planeCount && !flat(t, representatives[k]))
+                        ++k;
+                    if (k < planeCount)
+                        joins[i].push_back({t, representatives[k]});
+                    else if (planeCount < kPlanesPerVertex)
+                        representatives[planeCount++] = t;
+                }
+            }
+        });
+        for (std::size_t i = 0; i < count; ++i)
+            for (const auto& [t, u] : joins[i])
+                patches.join(t, u);
     }
     std::vector<std::uint32_t> patchOf(triangleCount);
     for (std::uint32_t t = 0; t < triangleCount; ++t)
