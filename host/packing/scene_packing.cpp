@@ -153,8 +153,8 @@ std::vector<gpu::GpuMaterialTexture> packTextures(const std::vector<Texture>& te
 } // namespace
 
 struct PackingInput {
-    PackingInput(std::size_t candidateBound, bool textured, bool fp64)
-        : textured(textured), fp64(fp64), candidates(candidateBound, textured, fp64) {}
+    PackingInput(std::size_t candidateBound, bool withTextures, bool inFp64)
+        : textured(withTextures), fp64(inFp64), candidates(candidateBound, withTextures, inFp64) {}
     bool textured, fp64;
     PackedScene packed; // all but the triangles and vertices
     std::vector<PackedMaterial> materials;
