@@ -113,8 +113,9 @@ int runBatch(const Options& options) {
         destroyContext(context);
     });
     openHeadlessDevice(context, options);
-    const SceneCapacity capacity = sceneCapacityOf(context, !options.storageReads,
-                                                   options.kernel.precision == Precision::Fp64);
+    SceneCapacity capacity = sceneCapacityOf(context, !options.storageReads,
+                                             options.kernel.precision == Precision::Fp64);
+    allowTriangleLayouts(capacity, options.triangleLayout);
 
     int failed = 0;
     std::uint32_t images = 0;

@@ -141,6 +141,8 @@ std::string runBenchmark(const Context& context, Renderer& renderer, HeadlessTar
          << ", \"general_kernel\": " << (settings.generalKernel ? "true" : "false")
          << ", \"compiled_out\": " << compiledOutJson(renderer.specialization)
          << ", \"texel_reads\": " << (renderer.specialization.texelReads ? "true" : "false")
+         << ", \"triangle_layout\": "
+         << jsonString(renderer.specialization.indexedTriangles ? "indexed" : "corners")
          << ", \"baked_spheres\": " << (renderer.specialization.bakedSpheres ? "true" : "false")
          << ", \"primary_rays_per_second\": "
          << jsonNumber(pixels * settings.samplesPerPixel / (wallMedian * 1e-3));

@@ -153,10 +153,9 @@ bool intersectTriangleMollerTrumbore(Ray ray, rvec3 a, rvec3 b, rvec3 c, real tM
 // patch a ray leaves is never hit by it (--offset error-bound, ray_offset.glsl).
 bool intersectTriangle(Ray ray, ShearedRay sheared, uint i, real tMax, out real t,
                        out rvec3 barycentric) {
-    // Three independent fetches; the flat patch rides in corner 0's w.
-    rvec4 cornerA = fetchCorner(i, 0u), cornerB = fetchCorner(i, 1u), cornerC = fetchCorner(i, 2u);
-    if (rayOffsetKind == RAY_OFFSET_ERROR_BOUND && cornerWord(cornerA) == ray.leaving) return false;
-    rvec3 a = cornerA.xyz, b = cornerB.xyz, c = cornerC.xyz;
+    rvec3 a, b, c;
+    uint flatPatch = fetchTriangleCorners(i, a, b, c);
+    if (rayOffsetKind == RAY_OFFSET_ERROR_BOUND && flatPatch == ray.leaving) return false;
     if (watertightTriangles)
         return intersectTriangleWatertight(sheared, a, b, c, tMax, t, barycentric);
     return intersectTriangleMollerTrumbore(ray, a, b, c, tMax, t, barycentric);

@@ -7,12 +7,15 @@
 // 128-bit load per lane and a transpose for RGBA32 (docs/performance.md). On a GPU both are one
 // memory instruction per lane; texel buffers are the classic layout for hierarchies there too. In
 // fp64 the spheres and triangle corners are doubles and stay on the storage path; the other arrays
-// are floats and uints in both precisions. Needs: the scene's storage bindings and texelReads
-// (trace.comp).
+// are floats and uints in both precisions. Needs: the scene's storage bindings, texelReads and
+// indexedTriangles (trace.comp).
 
 layout(set = 0, binding = BINDING_SPHERE_TEXELS) uniform samplerBuffer sphereTexels;
 layout(set = 0, binding = BINDING_CORNER_TEXELS) uniform samplerBuffer cornerTexels;
 layout(set = 0, binding = BINDING_LAST_VERTEX_TEXELS) uniform usamplerBuffer lastVertexTexels;
+layout(set = 0,
+       binding = BINDING_TRIANGLE_VERTEX_TEXELS) uniform usamplerBuffer triangleVertexTexels;
+layout(set = 0, binding = BINDING_POSITION_TEXELS) uniform samplerBuffer positionTexels;
 layout(set = 0, binding = BINDING_BVH_NODE_TEXELS) uniform samplerBuffer bvhNodeTexels;
 layout(set = 0, binding = BINDING_NORMAL_TEXELS) uniform samplerBuffer normalTexels;
 layout(set = 0, binding = BINDING_MATERIAL_TEXELS) uniform samplerBuffer materialTexels;
@@ -32,8 +35,8 @@ rvec4 fetchSphere(uint i) {
     return spheres[i];
 }
 
-// Corner k (0, 1, 2) of triangle i: its position xyz, and in w the word of shared.h
-// (BINDING_TRIANGLE_CORNERS), which cornerWord reads.
+// Corner k (0, 1, 2) of triangle i in the corners layout: its position xyz, and in w the
+// word of shared.h (BINDING_TRIANGLE_CORNERS), which cornerWord reads.
 rvec4 fetchCorner(uint i, uint k) {
 #ifndef RT_FP64
     if (texelReads) return texelFetch(cornerTexels, int(3u * i + k));
@@ -54,6 +57,57 @@ uint cornerWord(rvec4 corner) {
 uint fetchLastVertex(uint i) {
     if (texelReads) return texelFetch(lastVertexTexels, int(i)).x;
     return triangleLastVertices[i];
+}
+
+// Triangle i in the indexed layout: its vertices' indices in xyz, its flat patch in w.
+uvec4 fetchTriangleVertices(uint i) {
+    if (texelReads) return texelFetch(triangleVertexTexels, int(i));
+    return triangleVertices[i];
+}
+
+// Vertex v's position in the indexed layout.
+rvec3 fetchVertexPosition(uint v) {
+#ifndef RT_FP64
+    if (texelReads) return texelFetch(positionTexels, int(v)).xyz;
+#endif
+    return vertexPositions[v].xyz;
+}
+
+// What a ray test reads of triangle i, in either layout: its corners' positions a, b, c;
+// returns its flat patch.
+uint fetchTriangleCorners(uint i, out rvec3 a, out rvec3 b, out rvec3 c) {
+    if (indexedTriangles) {
+        uvec4 triangle = fetchTriangleVertices(i);
+        a = fetchVertexPosition(triangle.x);
+        b = fetchVertexPosition(triangle.y);
+        c = fetchVertexPosition(triangle.z);
+        return triangle.w;
+    }
+    // Three independent fetches; the flat patch rides in corner 0's w.
+    rvec4 cornerA = fetchCorner(i, 0u), cornerB = fetchCorner(i, 1u), cornerC = fetchCorner(i, 2u);
+    a = cornerA.xyz;
+    b = cornerB.xyz;
+    c = cornerC.xyz;
+    return cornerWord(cornerA);
+}
+
+// What shading reads of triangle i, in either layout: its corners' positions a, b, c and
+// their vertex indices; returns its flat patch.
+uint fetchShadedTriangle(uint i, out rvec3 a, out rvec3 b, out rvec3 c, out uvec3 vertices) {
+    if (indexedTriangles) {
+        uvec4 triangle = fetchTriangleVertices(i);
+        vertices = triangle.xyz;
+        a = fetchVertexPosition(triangle.x);
+        b = fetchVertexPosition(triangle.y);
+        c = fetchVertexPosition(triangle.z);
+        return triangle.w;
+    }
+    rvec4 cornerA = fetchCorner(i, 0u), cornerB = fetchCorner(i, 1u), cornerC = fetchCorner(i, 2u);
+    vertices = uvec3(cornerWord(cornerB), cornerWord(cornerC), fetchLastVertex(i));
+    a = cornerA.xyz;
+    b = cornerB.xyz;
+    c = cornerC.xyz;
+    return cornerWord(cornerA);
 }
 
 // Hierarchy node i: four texels, one per vec4 of GpuBvhNode.

@@ -98,11 +98,10 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
         s.flatPatch = NO_PATCH;
         s.shadowPoint = s.position;
     } else {
-        rvec4 cornerA = fetchCorner(hit.index, 0u), cornerB = fetchCorner(hit.index, 1u),
-              cornerC = fetchCorner(hit.index, 2u);
-        uvec3 v = uvec3(cornerWord(cornerB), cornerWord(cornerC), fetchLastVertex(hit.index));
+        rvec3 a, b, c;
+        uvec3 v;
+        s.flatPatch = fetchShadedTriangle(hit.index, a, b, c, v);
         rvec3 w = hit.barycentric;
-        rvec3 a = cornerA.xyz, b = cornerB.xyz, c = cornerC.xyz;
         // The barycentric sum, whose error scales with the vertices only; with --offset
         // error-bound, onTrianglePlane takes o + t d instead where that bound is tighter.
         s.position = w.x * a + w.y * b + w.z * c;
@@ -132,7 +131,6 @@ SurfacePoint surfaceAt(Ray ray, Hit hit) {
                                           wf.y * (mb.specular.xyz * mb.specular.w) +
                                           wf.z * (mc.specular.xyz * mc.specular.w)
                                     : s.ks;
-        s.flatPatch = cornerWord(cornerA);
         s.shadowPoint = s.position;
         if (shiftShadowOrigin) {
             // The vertex normals, unit, on the side the shading normal faces once flipped.

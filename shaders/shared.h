@@ -41,10 +41,13 @@ using uint = std::uint32_t;
 #define BINDING_OUTPUT_IMAGE 0     // rgba8 storage image the kernel writes
 #define BINDING_SPHERES 1          // vec4 per sphere: centre xyz, radius w
 #define BINDING_SPHERE_MATERIALS 2 // uint per sphere: index into materials
-// Triangles, in leaf order (host/packing/scene_packing.h, gpuTriangleArrays): traversal reads
-// a triangle's three corners and nothing else, three independent fetches; the vertex
-// indices that shading needs (normals, materials) are read for the hit alone.
-// rvec4 per corner, three per triangle: the corner's position xyz, the very floats
+// Triangles, in leaf order, in one of two layouts (SPEC_INDEXED_TRIANGLES; the other's
+// bindings see the zeroed slot). Corners (host/packing/scene_packing.h, gpuTriangleArrays):
+// traversal reads a triangle's three corners and nothing else, three independent fetches;
+// the vertex indices that shading needs (normals, materials) are read for the hit alone.
+// Indexed (BINDING_TRIANGLE_VERTICES on): a triangle is its vertex indices, each vertex's
+// position stored once, a dependent fetch more for fewer bytes where vertices are shared.
+// Corners: rvec4 per corner, three per triangle: the corner's position xyz, the very floats
 // (doubles in fp64) that the tests compute with; w: corner 0 the triangle's flat patch,
 // corners 1 and 2 the vertex indices of corners 0 and 1 (uint bits in fp32, exact
 // integers in fp64).
@@ -82,7 +85,14 @@ using uint = std::uint32_t;
 #define BINDING_TEXCOORD_TEXELS 23   // RG32F view of BINDING_VERTEX_TEXCOORDS
 #define BINDING_MATERIAL_TEXTURE_TEXELS 24 // RGBA32UI view of BINDING_MATERIAL_TEXTURES
 #define BINDING_TEXTURE_PIXEL_TEXELS 25    // R32UI view of BINDING_TEXTURE_PIXELS
-#define BINDING_COUNT 26
+// Indexed triangles: uvec4 per triangle, its vertices' indices in xyz and its flat patch in w;
+// rvec4 per vertex, its position xyz (the same floats or doubles as a corner's; w its
+// material's index, which the kernel reads from BINDING_VERTEX_NORMALS instead).
+#define BINDING_TRIANGLE_VERTICES 26
+#define BINDING_VERTEX_POSITIONS 27
+#define BINDING_TRIANGLE_VERTEX_TEXELS 28 // RGBA32UI view of BINDING_TRIANGLE_VERTICES
+#define BINDING_POSITION_TEXELS 29        // RGBA32F view of BINDING_VERTEX_POSITIONS (not fp64)
+#define BINDING_COUNT 30
 
 // Specialization constant ids (host/render/trace_pipeline.h, TraceSpecialization): bool unless
 // marked uint.
@@ -127,6 +137,9 @@ using uint = std::uint32_t;
 // bool: the output image holds a part of the full image (headless --crop), placed by
 // GpuFrameParams; else all of it, and the kernel is the one without the part's arithmetic.
 #define SPEC_OUTPUT_PART 20
+// bool: the triangles are indexed (BINDING_TRIANGLE_VERTICES and BINDING_VERTEX_POSITIONS),
+// else corners (BINDING_TRIANGLE_CORNERS and BINDING_TRIANGLE_LAST_VERTICES).
+#define SPEC_INDEXED_TRIANGLES 21
 // The most spheres baked in: the closest-hit loop over them is unrolled, one test each.
 #define MAX_BAKED_SPHERES 15u
 #define RAY_OFFSET_FIXED 0u       // 1e-4 along the normal

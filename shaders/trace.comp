@@ -56,6 +56,7 @@ layout(constant_id = SPEC_RECORD_PIXEL) const bool recordPixel = false;
 layout(constant_id = SPEC_FLOAT_OUTPUT) const bool floatOutput = false;
 // Headless --crop: the output image is a part of the full image (GpuFrameParams places it).
 layout(constant_id = SPEC_OUTPUT_PART) const bool outputPart = false;
+layout(constant_id = SPEC_INDEXED_TRIANGLES) const bool indexedTriangles = false;
 // --count-work (hidden): the hierarchy's work is counted into `status` (GpuKernelStatus).
 layout(constant_id = SPEC_COUNT_WORK) const bool countWork = false;
 uint nodeVisits = 0u;         // this invocation's, with countWork (bvh.glsl)
@@ -85,7 +86,8 @@ layout(set = 0, binding = BINDING_SPHERES, std430) readonly buffer SphereBuffer 
 layout(set = 0, binding = BINDING_SPHERE_MATERIALS, std430) readonly buffer SphereMaterialBuffer {
     uint sphereMaterials[];
 };
-// Per triangle corner, three per triangle in leaf order: its position in xyz, and in w
+// Triangles in leaf order, as corners (!indexedTriangles) or indexed (below).
+// Per triangle corner, three per triangle: its position in xyz, and in w
 // corner 0's flat patch (host/packing/flat_patches.h, ray_offset.glsl) or corner 1's and 2's
 // vertex indices, the vertices of corners 0 and 1 (shared.h; read with cornerWord).
 layout(set = 0, binding = BINDING_TRIANGLE_CORNERS, std430) readonly buffer CornerBuffer {
@@ -94,6 +96,15 @@ layout(set = 0, binding = BINDING_TRIANGLE_CORNERS, std430) readonly buffer Corn
 // Per triangle, the vertex index of its corner 2.
 layout(set = 0, binding = BINDING_TRIANGLE_LAST_VERTICES, std430) readonly buffer LastVertexBuffer {
     uint triangleLastVertices[];
+};
+// Indexed triangles (indexedTriangles; else these two are dummies, and with it the two
+// above): per triangle its vertices' indices in xyz and its flat patch in w; per vertex
+// its position in xyz.
+layout(set = 0, binding = BINDING_TRIANGLE_VERTICES, std430) readonly buffer TriangleVertexBuffer {
+    uvec4 triangleVertices[];
+};
+layout(set = 0, binding = BINDING_VERTEX_POSITIONS, std430) readonly buffer PositionBuffer {
+    rvec4 vertexPositions[];
 };
 // Per vertex, its normal as the scene file gives it (maybe unnormalised or zero) in xyz, and
 // the index of its material in materials[] in w (the uint's bits; shade.glsl).

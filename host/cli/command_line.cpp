@@ -99,6 +99,8 @@ std::string commandLine(const Options& options) {
 
     // Then how the program runs, which leaves the image as it is.
     addChoice("--accel", accelerationNames(), options.acceleration, defaults.acceleration);
+    addChoice("--triangle-layout", triangleLayoutNames(), options.triangleLayout,
+              defaults.triangleLayout);
     if (!options.device.empty()) add("--device", shellQuoted(options.device));
     addCount("--threads", options.cpuThreads, 0);
     addCount("--bench", options.benchFrames, 0);

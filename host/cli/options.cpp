@@ -101,6 +101,13 @@ const ChoiceNames<Acceleration>& accelerationNames() {
     return names;
 }
 
+const ChoiceNames<TriangleLayout>& triangleLayoutNames() {
+    static const ChoiceNames<TriangleLayout> names = {{"auto", TriangleLayout::Auto},
+                                                      {"corners", TriangleLayout::Corners},
+                                                      {"indexed", TriangleLayout::Indexed}};
+    return names;
+}
+
 std::string usageText() {
     return "Usage: Raytracer SCENE [options]\n"
            "       Raytracer SCENE... -o 'out/{name}.png' [options]\n"
@@ -164,6 +171,10 @@ std::string usageText() {
            "                        auto: the hierarchy from " +
            std::to_string(kBvhAutoThreshold) +
            " primitives up)\n"
+           "  --triangle-layout auto|corners|indexed  triangles on the GPU as three corner\n"
+           "                        positions each (fastest), or as vertex indices and shared\n"
+           "                        positions (fewer bytes); same image (default auto: indexed\n"
+           "                        where it takes fewer bytes)\n"
            "  --validate            enable the Khronos validation layer; any message fails the "
            "run\n"
            "  --no-cache            neither read nor write the shader cache "
@@ -324,6 +335,8 @@ Options parseOptions(int argc, const char* const* argv) {
             options.cpuThreads = parseCount(arg, value(), 1, 256);
         } else if (arg == "--accel") {
             options.acceleration = parseChoice(arg, value(), accelerationNames());
+        } else if (arg == "--triangle-layout") {
+            options.triangleLayout = parseChoice(arg, value(), triangleLayoutNames());
         } else if (arg == "--validate") {
             options.validate = true;
         } else if (arg == "--no-cache") {

@@ -7,6 +7,7 @@
 #include "model/model_scene.h"
 #include "packing/bvh.h"
 #include "packing/kernel_choices.h"
+#include "packing/triangle_layout.h"
 #include "scene/camera.h"
 #include "shared.h"
 
@@ -36,7 +37,8 @@ struct Options {
     std::string device;            // --device NAME|INDEX; empty picks the best
     std::uint32_t cpuThreads = 0;  // --threads N: the host's threads and lavapipe's; 0: defaults
     bool validate = false;         // --validate: Khronos layer on, any message fails the run
-    Acceleration acceleration = Acceleration::Auto; // --accel auto|bvh|none
+    Acceleration acceleration = Acceleration::Auto;       // --accel auto|bvh|none
+    TriangleLayout triangleLayout = TriangleLayout::Auto; // --triangle-layout
     bool showHelp = false;
     bool showVersion = false; // --version: the program's, Vulkan's headers' and glslang's
     bool listDevices = false; // --list-devices: print every Vulkan device and exit
@@ -111,6 +113,8 @@ struct Options {
 
 // --accel's names, in the order --help lists them.
 const ChoiceNames<Acceleration>& accelerationNames();
+// --triangle-layout's names, in the order --help lists them.
+const ChoiceNames<TriangleLayout>& triangleLayoutNames();
 // --up's names as printed: y, -y, z, -z, x, -x.
 const ChoiceNames<UpAxis>& upAxisNames();
 // --view's names: three-quarter, front, back, left, right, top, bottom.

@@ -18,6 +18,7 @@ RenderSettings renderSettingsFrom(const Options& options) {
     settings.background = glm::vec3(options.background);
     settings.fovDegrees = options.fovDegrees;
     settings.acceleration = options.acceleration;
+    settings.triangleLayout = options.triangleLayout;
     settings.kernel = options.kernel;
     settings.cacheDirectory = userCacheDirectory(options.useCache);
     settings.camera = options.camera;
@@ -91,6 +92,8 @@ std::optional<SceneCapacity> capacityBeforeLoading(const Options& options) {
     const LimitOverrides& lowered = limitOverrides();
     const bool limitsLowered = lowered.maxStorageBufferRange || lowered.maxMemoryAllocationSize;
     if (!limitsLowered && (error || bytes < kProbedFileBytes)) return std::nullopt;
-    return probeSceneCapacity(options.device, !options.storageReads,
-                              options.kernel.precision == Precision::Fp64);
+    SceneCapacity capacity = probeSceneCapacity(options.device, !options.storageReads,
+                                                options.kernel.precision == Precision::Fp64);
+    allowTriangleLayouts(capacity, options.triangleLayout);
+    return capacity;
 }

@@ -68,6 +68,10 @@ constexpr std::array<BindingInfo, BINDING_COUNT> table() {
         texels(BINDING_TEXCOORD_TEXELS, BINDING_VERTEX_TEXCOORDS, kVec2, 8, false),
         texels(BINDING_MATERIAL_TEXTURE_TEXELS, BINDING_MATERIAL_TEXTURES, kUvec4, 16, false),
         texels(BINDING_TEXTURE_PIXEL_TEXELS, BINDING_TEXTURE_PIXELS, kUint, 4, false),
+        array(BINDING_TRIANGLE_VERTICES, "triangles' vertex indices"),
+        array(BINDING_VERTEX_POSITIONS, "vertex positions"),
+        texels(BINDING_TRIANGLE_VERTEX_TEXELS, BINDING_TRIANGLE_VERTICES, kUvec4, 16, false),
+        texels(BINDING_POSITION_TEXELS, BINDING_VERTEX_POSITIONS, kVec4, 16, true),
     }};
     return bindings;
 }

@@ -7,6 +7,7 @@
 #include "gpu/vk_check.h"
 #include "packing/workgroup_order.h"
 #include "render/bindings.h"
+#include "render/device_capacity.h"
 #include "scene/scene_triangles.h"
 #include "shared.h"
 
@@ -287,10 +288,21 @@ void createRendererFrom(Renderer& renderer, const Context& context, const Scene&
     renderer.sources = slotSources(std::move(lines), packed);
     renderer.specialization = traceSpecialization(packed, settings);
     {
+        // Auto takes indexed triangles also where the corners would not fit the device.
+        SceneCapacity corners =
+            sceneCapacityOf(context, !settings.storageReads, precision == Precision::Fp64);
+        allowTriangleLayouts(corners, TriangleLayout::Corners);
+        const bool cornersFit = packed.triangles.size() <= triangleCapacity(corners).triangles;
+        renderer.specialization.indexedTriangles =
+            !packed.triangles.empty() &&
+            indexedTriangles(packed, settings.triangleLayout, cornersFit);
+    }
+    {
         const PhaseTimer timer("upload");
         // packed's arrays go as they are written: the GPU holds them now.
-        renderer.scene =
-            uploadScene(context, std::move(packed), renderer.specialization.texelReads);
+        renderer.scene = uploadScene(context, std::move(packed),
+                                     {renderer.specialization.texelReads != VK_FALSE,
+                                      renderer.specialization.indexedTriangles != VK_FALSE});
     }
     // The upload turns texel reads off for an array beyond maxTexelBufferElements.
     renderer.specialization.texelReads = renderer.scene.texelReads;

@@ -4,6 +4,7 @@
 
 #include "gpu/context.h"
 #include "gpu/resources.h"
+#include "packing/triangle_layout.h"
 #include "render/kernel_cache.h"
 #include "render/region_planner.h"
 #include "render/scene_upload.h"
@@ -25,7 +26,8 @@ struct RenderSettings {
     std::uint32_t depth = 5;
     glm::vec3 background{1.0f};
     double fovDegrees = 60.0;
-    Acceleration acceleration = Acceleration::Auto; // --accel: hierarchy or every primitive
+    Acceleration acceleration = Acceleration::Auto;       // --accel: hierarchy or every primitive
+    TriangleLayout triangleLayout = TriangleLayout::Auto; // --triangle-layout
     KernelChoices kernel;                 // --sampler, --seed, --precision and the method switches
     std::filesystem::path cacheDirectory; // shader and pipeline cache; empty: none (--no-cache)
     CameraPose camera;                    // the default camera unless --camera-* moved it

@@ -24,20 +24,32 @@ struct ArrayView {
 
 // The bindings in the order their arrays are written: those whose sources go first first,
 // the hierarchy's nodes (their own array), then the triangles' arrays (the triangles go
-// after the second, the vertices after the third).
+// after the third, the vertices after the fifth).
 constexpr std::uint32_t kWriteOrder[] = {
-    BINDING_BVH_NODES,         BINDING_TRIANGLE_CORNERS, BINDING_TRIANGLE_LAST_VERTICES,
-    BINDING_VERTEX_NORMALS,    BINDING_SPHERES,          BINDING_SPHERE_MATERIALS,
-    BINDING_MATERIALS,         BINDING_LIGHTS,           BINDING_VERTEX_TEXCOORDS,
-    BINDING_MATERIAL_TEXTURES, BINDING_TEXTURE_PIXELS,
+    BINDING_BVH_NODES,
+    BINDING_TRIANGLE_CORNERS,
+    BINDING_TRIANGLE_LAST_VERTICES,
+    BINDING_TRIANGLE_VERTICES,
+    BINDING_VERTEX_POSITIONS,
+    BINDING_VERTEX_NORMALS,
+    BINDING_SPHERES,
+    BINDING_SPHERE_MATERIALS,
+    BINDING_MATERIALS,
+    BINDING_LIGHTS,
+    BINDING_VERTEX_TEXCOORDS,
+    BINDING_MATERIAL_TEXTURES,
+    BINDING_TEXTURE_PIXELS,
 };
 
-// packed's large arrays that no array still to be written is made of, released.
+// packed's large arrays that no array still to be written is made of, released (an array
+// of the other layout is empty, so written from the start).
 void releaseWritten(const bool (&written)[BINDING_COUNT], PackedScene& packed) {
     if (written[BINDING_BVH_NODES]) release(packed.bvhNodes);
-    if (written[BINDING_TRIANGLE_CORNERS] && written[BINDING_TRIANGLE_LAST_VERTICES])
+    if (written[BINDING_TRIANGLE_CORNERS] && written[BINDING_TRIANGLE_LAST_VERTICES] &&
+        written[BINDING_TRIANGLE_VERTICES])
         release(packed.triangles);
-    if (written[BINDING_TRIANGLE_CORNERS] && written[BINDING_VERTEX_NORMALS]) {
+    if (written[BINDING_TRIANGLE_CORNERS] && written[BINDING_VERTEX_POSITIONS] &&
+        written[BINDING_VERTEX_NORMALS]) {
         release(packed.vertexNormals);
         release(packed.vertexPositions);
         release(packed.vertexPositions64);
@@ -57,24 +69,38 @@ ArrayView written(std::uint32_t binding, std::size_t bytes,
     return {binding, bytes, [write, &packed](void* destination) { write(packed, destination); }};
 }
 
+// An array of the layout not chosen: empty, bound to the zeroed slot.
+ArrayView unused(std::uint32_t binding) {
+    return {binding, 0, [](void*) {}};
+}
+
 VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
     return (value + alignment - 1) / alignment * alignment;
 }
 
 // Both uploadScenes; released: packed, when its arrays go as they are written.
-GpuScene upload(const Context& context, const PackedScene& packed, bool wantTexelReads,
+GpuScene upload(const Context& context, const PackedScene& packed, UploadLayout layout,
                 PackedScene* released) {
     // fp64: the double arrays take the place of the float ones (shaders/precision.glsl).
     const bool fp64 = !packed.spheres64.empty() || !packed.vertexPositions64.empty();
-    // The triangle arrays are derived from the packed ones as they are written into the
-    // buffer's memory: no host copy of them is made.
+    // The corners are derived from the packed arrays as they are written into the buffer's
+    // memory: no host copy of them is made. Indexed triangles are the packed arrays as they are.
     const GpuTriangleArrayBytes triangleBytes = gpuTriangleArrayBytes(packed);
+    const bool indexed = layout.indexedTriangles;
     const ArrayView arrays[] = {
         fp64 ? view(BINDING_SPHERES, packed.spheres64) : view(BINDING_SPHERES, packed.spheres),
         view(BINDING_SPHERE_MATERIALS, packed.sphereMaterials),
-        written(BINDING_TRIANGLE_CORNERS, triangleBytes.corners, writeTriangleCorners, packed),
-        written(BINDING_TRIANGLE_LAST_VERTICES, triangleBytes.lastVertices, writeLastVertices,
-                packed),
+        indexed ? unused(BINDING_TRIANGLE_CORNERS)
+                : written(BINDING_TRIANGLE_CORNERS, triangleBytes.corners, writeTriangleCorners,
+                          packed),
+        indexed ? unused(BINDING_TRIANGLE_LAST_VERTICES)
+                : written(BINDING_TRIANGLE_LAST_VERTICES, triangleBytes.lastVertices,
+                          writeLastVertices, packed),
+        indexed ? view(BINDING_TRIANGLE_VERTICES, packed.triangles)
+                : unused(BINDING_TRIANGLE_VERTICES),
+        !indexed ? unused(BINDING_VERTEX_POSITIONS)
+        : fp64   ? view(BINDING_VERTEX_POSITIONS, packed.vertexPositions64)
+                 : view(BINDING_VERTEX_POSITIONS, packed.vertexPositions),
         written(BINDING_VERTEX_NORMALS, triangleBytes.normalsAndMaterials, writeNormalsAndMaterials,
                 packed),
         view(BINDING_MATERIALS, packed.materials),
@@ -100,7 +126,8 @@ GpuScene upload(const Context& context, const PackedScene& packed, bool wantTexe
     GpuScene scene;
     OnFailure release([&] { destroyGpuScene(context, scene); });
     auto viewed = [&](const BindingInfo& view) { return !(fp64 && view.doublesInFp64); };
-    scene.texelReads = wantTexelReads;
+    scene.texelReads = layout.texelReads;
+    scene.indexedTriangles = indexed;
     for (const BindingInfo& view : kBindings) {
         if (view.role != BindingRole::SceneTexels) continue;
         const VkDeviceSize texels = bytesOf[view.source] / view.texelBytes;
@@ -210,12 +237,12 @@ GpuScene upload(const Context& context, const PackedScene& packed, bool wantTexe
 
 } // namespace
 
-GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wantTexelReads) {
-    return upload(context, packed, wantTexelReads, nullptr);
+GpuScene uploadScene(const Context& context, const PackedScene& packed, UploadLayout layout) {
+    return upload(context, packed, layout, nullptr);
 }
 
-GpuScene uploadScene(const Context& context, PackedScene&& packed, bool wantTexelReads) {
-    GpuScene scene = upload(context, packed, wantTexelReads, &packed);
+GpuScene uploadScene(const Context& context, PackedScene&& packed, UploadLayout layout) {
+    GpuScene scene = upload(context, packed, layout, &packed);
     packed = PackedScene{};
     return scene;
 }

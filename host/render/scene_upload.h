@@ -23,20 +23,28 @@ struct GpuScene {
     // SceneTexels), always valid: over the hot arrays when texelReads, else over the zeroed
     // slot (the kernel then never reads them). The other entries stay null.
     VkBufferView texelViews[BINDING_COUNT]{};
-    bool texelReads = false;      // the kernel reads the hot arrays through texelViews
-    std::string storageReadsNote; // why not, when an array exceeds maxTexelBufferElements
+    bool texelReads = false;       // the kernel reads the hot arrays through texelViews
+    bool indexedTriangles = false; // the triangles' layout (packing/triangle_layout.h)
+    std::string storageReadsNote;  // why not, when an array exceeds maxTexelBufferElements
 };
 
-// With wantTexelReads the arrays also get texel-buffer views (but fp64's doubles), unless
+// How the arrays are to be read: through texel views where they can (else storage
+// bindings alone), and the triangles' layout.
+struct UploadLayout {
+    bool texelReads = true;
+    bool indexedTriangles = false; // packing/triangle_layout.h; else corners
+};
+
+// With layout.texelReads the arrays also get texel-buffer views (but fp64's doubles), unless
 // one exceeds maxTexelBufferElements (storageReadsNote). An array beyond
 // maxStorageBufferRange is read through its view alone; throws with the limit's name and the
 // device's when one is not read so, or when one exceeds maxMemoryAllocationSize.
-GpuScene uploadScene(const Context& context, const PackedScene& packed, bool wantTexelReads = true);
+GpuScene uploadScene(const Context& context, const PackedScene& packed, UploadLayout layout = {});
 
 // The same, each of packed's arrays released as soon as the arrays made of it are written:
 // a large scene's packed copy is then not held whole beside the device's (lavapipe's device
 // memory is the host's) or a staging buffer. packed is left empty.
-GpuScene uploadScene(const Context& context, PackedScene&& packed, bool wantTexelReads = true);
+GpuScene uploadScene(const Context& context, PackedScene&& packed, UploadLayout layout = {});
 
 // Writes new lights over the uploaded ones, as many as before (an OBJ model's rig placed
 // for another camera): only the lights' range of the buffer is rewritten, and the kernel

@@ -19,7 +19,7 @@
 #include <string>
 
 // Hashed as bytes for the pipeline cache's key: no padding may hide in it.
-static_assert(sizeof(TraceSpecialization) == 21 * sizeof(std::uint32_t));
+static_assert(sizeof(TraceSpecialization) == 22 * sizeof(std::uint32_t));
 
 VkDescriptorType bindingDescriptorType(std::uint32_t binding) {
     return kBindings[binding].type;
@@ -68,6 +68,7 @@ std::vector<VkSpecializationMapEntry> specializationMapEntries() {
             {SPEC_SHIFT_SHADOW_ORIGIN, offsetof(S, shiftShadowOrigin), sizeof(VkBool32)},
             {SPEC_HAS_TEXTURES, offsetof(S, hasTextures), sizeof(VkBool32)},
             {SPEC_TEXEL_READS, offsetof(S, texelReads), sizeof(VkBool32)},
+            {SPEC_INDEXED_TRIANGLES, offsetof(S, indexedTriangles), sizeof(VkBool32)},
             {SPEC_BAKED_SPHERES, offsetof(S, bakedSpheres), sizeof(VkBool32)},
             {SPEC_BAKED_SPHERE_COUNT, offsetof(S, bakedSphereCount), sizeof(std::uint32_t)},
             {SPEC_BAKED_LIGHT_COUNT, offsetof(S, bakedLightCount), sizeof(std::uint32_t)},

@@ -29,6 +29,8 @@ struct TraceSpecialization {
     // Shadow rays from the shifted point (--terminator, SPEC_SHIFT_SHADOW_ORIGIN).
     VkBool32 shiftShadowOrigin = VK_FALSE;
     VkBool32 texelReads = VK_TRUE; // hot arrays through texel buffers (else storage buffers)
+    // Triangles as vertex indices and shared positions (SPEC_INDEXED_TRIANGLES), else corners.
+    VkBool32 indexedTriangles = VK_FALSE;
     // A small scene's spheres baked in (shaders/baked_spheres.glsl), and the sphere and
     // light counts the kernel is then compiled for.
     VkBool32 bakedSpheres = VK_FALSE;

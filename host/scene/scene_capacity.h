@@ -1,9 +1,11 @@
 // How many triangles one device can hold, from its limits, so that a file too large for it
 // is refused as soon as its count is known (an OBJ's survey, a binary header, the end of a
 // scene text's parse), not after the long work of the model, the packing and the
-// hierarchy. The count that decides is the triangle corners' array (shaders/shared.h:
-// 3 vec4 a triangle, 3 dvec4 in fp64), the largest per triangle; what this check lets
-// through, the upload checks again array by array (render/scene_upload.h).
+// hierarchy. The count that decides is the triangles' largest array, the largest per triangle
+// (shaders/shared.h): their corners (3 vec4 a triangle, 3 dvec4 in fp64), or indexed their
+// vertex indices (a uvec4). The vertices' arrays are left out (their count is not known
+// yet), so the check is one a scene must pass; what it lets through, the upload checks
+// again array by array (render/scene_upload.h).
 #pragma once
 
 #include <cstdint>
@@ -19,12 +21,17 @@ struct SceneCapacity {
     std::uint64_t alignment = 16;              // of an array in its buffer (scene_upload.cpp)
     bool texelReads = true;                    // the corners may be read through their texel view
     bool fp64 = false; // --precision fp64: corners of doubles, read as storage
+    // The triangle layouts the scene may take (packing/triangle_layout.h, --triangle-layout):
+    // the one that holds the more triangles counts.
+    bool cornersAllowed = true;
+    bool indexedAllowed = true;
 };
 
 // The most triangles the device holds, and the limit that sets it.
 struct TriangleCapacity {
     std::uint64_t triangles = 0;
-    std::string limit; // "maxTexelBufferElements of 134217728 (3 texels a triangle)"
+    // "maxTexelBufferElements of 134217728 (3 texels a triangle)"; indexed: "..., indexed)"
+    std::string limit;
 };
 TriangleCapacity triangleCapacity(const SceneCapacity& capacity);
 

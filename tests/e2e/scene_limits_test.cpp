@@ -58,7 +58,8 @@ TEST(SceneLimits, ArraysBeyondOneBindingOrAllocationRenderTheSameImage) {
 }
 
 // A scene beyond a lowered limit is refused by the early check (scene_capacity.h), which
-// names the limit, the device and the largest scene that fits.
+// names the limit, the device and the largest scene that fits in the triangle layouts
+// allowed (--triangle-layout; auto's bound is indexed's, the larger).
 TEST(SceneLimits, WhatCannotBeReadSoNamesTheLimitAndTheDevice) {
     const std::filesystem::path dir = freshOutputDir("scene-limits/errors");
     const std::filesystem::path scene = dir / "mesh.scene";
@@ -73,15 +74,18 @@ TEST(SceneLimits, WhatCannotBeReadSoNamesTheLimitAndTheDevice) {
         "error: " + scene.string() + " holds 200 triangles, more than llvmpipe";
     const Case cases[] = {
         // The storage path reads every array from its binding.
-        {{"--max-storage-range", "256", "--storage-reads"},
+        {{"--max-storage-range", "256", "--storage-reads", "--triangle-layout", "corners"},
          "can hold: its maxStorageBufferRange of 256 bytes (48 a triangle) sets the largest "
          "scene at 5 triangles\n"},
+        {{"--max-storage-range", "256", "--storage-reads"},
+         "can hold: its maxStorageBufferRange of 256 bytes (16 a triangle, indexed) sets the "
+         "largest scene at 16 triangles\n"},
         // fp64 reads its doubles from storage.
-        {{"--max-storage-range", "256", "--precision", "fp64"},
+        {{"--max-storage-range", "256", "--precision", "fp64", "--triangle-layout", "corners"},
          "can hold: its maxStorageBufferRange of 256 bytes (96 a triangle) sets the largest "
          "scene at 2 triangles in fp64\n"},
         // One array in one allocation: 4096 bytes less the zeroed slot, 48 bytes a triangle.
-        {{"--max-allocation", "4096"},
+        {{"--max-allocation", "4096", "--triangle-layout", "corners"},
          "can hold: its maxMemoryAllocationSize of 4096 bytes (48 a triangle, in one "
          "allocation) sets the largest scene at 85 triangles\n"},
     };
@@ -112,7 +116,8 @@ std::string stripObj(int n, bool broken) {
 TEST(SceneLimits, TheEarlyCheckRunsBeforeTheReadAndLetsTheLargestSceneThrough) {
     const std::filesystem::path dir = freshOutputDir("scene-limits/early");
     const int triangles = 30;
-    const std::string atLimit = std::to_string(48 * triangles); // --storage-reads: 48 a triangle
+    // --storage-reads, corners: 48 bytes a triangle in the largest array.
+    const std::string atLimit = std::to_string(48 * triangles);
     const std::string under = std::to_string(48 * triangles - 1);
     writeTextFile(dir / "strip.obj", stripObj(triangles, false));
     writeTextFile(dir / "broken.obj", stripObj(triangles, true));
@@ -120,6 +125,8 @@ TEST(SceneLimits, TheEarlyCheckRunsBeforeTheReadAndLetsTheLargestSceneThrough) {
         std::vector<std::string> args = {(dir / model).string(),
                                          "--no-ground",
                                          "--storage-reads",
+                                         "--triangle-layout",
+                                         "corners",
                                          "--width",
                                          "32",
                                          "--height",
@@ -153,10 +160,10 @@ TEST(SceneLimits, ABatchSkipsASceneTooLargeForTheDevice) {
     const std::filesystem::path dir = freshOutputDir("scene-limits/batch");
     writeTextFile(dir / "large.obj", stripObj(30, false));
     writeTextFile(dir / "small.obj", stripObj(10, false));
-    const ProcessResult run =
-        runRaytracer({(dir / "large.obj").string(), (dir / "small.obj").string(), "-o",
-                      (dir / "{name}.png").string(), "--storage-reads", "--max-storage-range",
-                      "960", "--width", "32", "--height", "24", "--validate"});
+    const ProcessResult run = runRaytracer(
+        {(dir / "large.obj").string(), (dir / "small.obj").string(), "-o",
+         (dir / "{name}.png").string(), "--storage-reads", "--triangle-layout", "corners",
+         "--max-storage-range", "960", "--width", "32", "--height", "24", "--validate"});
     EXPECT_EQ(run.exitCode, 3);
     EXPECT_NE(run.err.find("large.obj holds 30 triangles, more than llvmpipe"), std::string::npos)
         << run.err;
@@ -194,7 +201,7 @@ TEST(SceneLimits, TheUploadSpreadsTheArraysAndViewsTheLargeOnes) {
     destroyGpuScene(context, split);
     // What the early check lets through the upload checks again, array by array.
     try {
-        uploadScene(context, packed, false);
+        uploadScene(context, packed, {.texelReads = false});
         ADD_FAILURE() << "the corners are beyond the storage range";
     } catch (const std::runtime_error& error) {
         EXPECT_NE(std::string(error.what())

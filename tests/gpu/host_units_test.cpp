@@ -4,6 +4,7 @@
 #include "gpu/shader_compiler.h"
 #include "gpu/spirv_specializer.h"
 #include "packing/scene_packing.h"
+#include "packing/triangle_layout.h"
 #include "render/kernel_sources.h"
 #include "render/renderer.h"
 #include "render/trace_pipeline.h"
@@ -187,6 +188,33 @@ TEST(ScenePacking, TrianglesGoToTheKernelAsCornersWithTheirVertexIndices) {
     ASSERT_EQ(exact.corners64.size(), 9u);
     EXPECT_EQ(exact.corners64[7], glm::dvec4(1, 0, -5, 4)); // triangle 2's corner 1, b; e is 4
     EXPECT_EQ(exact.corners64[8], glm::dvec4(1, 1, -5, 1)); // its corner 2, d; b is vertex 1
+}
+
+// Auto's choice (packing/triangle_layout.h): indexed for a large mesh whose triangles share
+// their vertices, corners below the size or where indexed would take more bytes, and indexed
+// whatever the size where the corners do not fit the device.
+TEST(TriangleLayout, AutoIsIndexedForALargeSharedMeshOrWhereCornersDoNotFit) {
+    PackedScene packed;
+    packed.triangles.resize(kIndexedAutoTriangles);
+    packed.vertexPositions.resize(kIndexedAutoTriangles / 2); // a closed mesh's share
+    const TriangleLayoutBytes bytes = triangleLayoutBytes(packed);
+    EXPECT_EQ(bytes.corners, 52u * kIndexedAutoTriangles);
+    EXPECT_EQ(bytes.indexed, 16u * kIndexedAutoTriangles + 16u * kIndexedAutoTriangles / 2);
+    EXPECT_TRUE(indexedTriangles(packed, TriangleLayout::Auto, true));
+    EXPECT_FALSE(indexedTriangles(packed, TriangleLayout::Corners, false));
+
+    packed.vertexPositions.resize(3 * kIndexedAutoTriangles); // each triangle its own three
+    EXPECT_GT(triangleLayoutBytes(packed).indexed, triangleLayoutBytes(packed).corners);
+    EXPECT_FALSE(indexedTriangles(packed, TriangleLayout::Auto, true));
+    EXPECT_TRUE(indexedTriangles(packed, TriangleLayout::Auto, false));
+    EXPECT_TRUE(indexedTriangles(packed, TriangleLayout::Indexed, true));
+
+    packed.triangles.resize(kIndexedAutoTriangles - 1);
+    packed.vertexPositions.resize(kIndexedAutoTriangles / 2);
+    EXPECT_FALSE(indexedTriangles(packed, TriangleLayout::Auto, true));
+
+    packed.vertexPositions64.resize(packed.vertexPositions.size()); // fp64: doubles
+    EXPECT_EQ(triangleLayoutBytes(packed).corners, 100u * (kIndexedAutoTriangles - 1));
 }
 
 TEST(ScenePacking, VerticesDifferingOnlyInMaterialStaySeparate) {

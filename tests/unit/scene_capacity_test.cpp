@@ -1,19 +1,50 @@
 // What a device holds (scene/scene_capacity.h): each path's limit, the one that reaches
-// further, the allocation's cap, and the message at the boundary.
+// further, the allocation's cap, each triangle layout's, and the message at the boundary.
 #include "scene/scene_capacity.h"
 
 #include <gtest/gtest.h>
 
 namespace {
 
-// lavapipe's limits.
+// lavapipe's limits, for triangles as corners (--triangle-layout corners).
 SceneCapacity lavapipe() {
     SceneCapacity capacity;
     capacity.device = "llvmpipe";
     capacity.maxTexelBufferElements = 1u << 27;
     capacity.maxStorageBufferRange = 1u << 27;
     capacity.maxMemoryAllocationSize = 1ull << 31;
+    capacity.indexedAllowed = false;
     return capacity;
+}
+
+// Indexed triangles take a uvec4 a triangle in their largest array, one texel, in both
+// precisions; auto (both layouts allowed) counts the one that holds more.
+TEST(SceneCapacity, IndexedTrianglesHoldAThirdOfTheTexelsAndBytes) {
+    SceneCapacity indexed = lavapipe();
+    indexed.indexedAllowed = true;
+    indexed.cornersAllowed = false;
+    // lavapipe's 2 GiB allocation binds before its texel limit: one uvec4 less the slot.
+    const std::uint64_t allocated = ((1ull << 31) - 16) / 16;
+    EXPECT_EQ(triangleCapacity(indexed).triangles, allocated);
+    EXPECT_EQ(triangleCapacity(indexed).limit, "maxMemoryAllocationSize of 2147483648 bytes (16 "
+                                               "a triangle, indexed, in one allocation)");
+    indexed.maxMemoryAllocationSize = 0;
+    EXPECT_EQ(triangleCapacity(indexed).triangles, 1u << 27);
+    EXPECT_EQ(triangleCapacity(indexed).limit,
+              "maxTexelBufferElements of 134217728 (1 texel a triangle, indexed)");
+    indexed.fp64 = true; // the indices are uints: still one texel
+    EXPECT_EQ(triangleCapacity(indexed).triangles, 1u << 27);
+    indexed.texelReads = false;
+    EXPECT_EQ(triangleCapacity(indexed).triangles, (1u << 27) / 16);
+    EXPECT_EQ(triangleCapacity(indexed).limit,
+              "maxStorageBufferRange of 134217728 bytes (16 a triangle, indexed)");
+
+    // Auto: indexed holds the more, in every limit.
+    SceneCapacity either = lavapipe();
+    either.indexedAllowed = true;
+    EXPECT_EQ(triangleCapacity(either).triangles, allocated);
+    either.texelReads = false;
+    EXPECT_EQ(triangleCapacity(either).triangles, (1u << 27) / 16);
 }
 
 TEST(SceneCapacity, TheTexelViewReachesFurtherThanTheStorageRange) {
