@@ -19,6 +19,7 @@
 
 #include "base/parallel.h"
 #include "base/phase_progress.h"
+#include "base/populated_memory.h"
 #include "base/release.h"
 
 #include <algorithm>
@@ -28,6 +29,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace {
 
@@ -57,12 +59,31 @@ struct Box {
     }
 };
 
+// Ranges at least this big are bounded and binned on all threads, in blocks whose results
+// are merged: boxes grow exactly and counts add up in any order, so the tree is the same.
+constexpr std::uint32_t kParallelPass = 1u << 17;
+
 // A range of primitives with its box and the box of its centroids.
 struct Range {
     std::uint32_t begin = 0, end = 0;
     Box bounds, centroids;
     std::uint32_t size() const { return end - begin; }
 };
+
+// A bin of the SAH sweep: the boxes of its primitives and of their centroids, and their count.
+struct Bin {
+    Box bounds, centroids;
+    std::uint32_t count = 0;
+};
+using Bins = std::array<Bin, kBins>;
+
+void mergeBins(const Bins& from, Bins& into) {
+    for (int i = 0; i < kBins; ++i) {
+        into[i].bounds.grow(from[i].bounds);
+        into[i].centroids.grow(from[i].centroids);
+        into[i].count += from[i].count;
+    }
+}
 
 BvhChild interiorChild(const Box& box, std::uint32_t node) {
     return {box.lo, box.hi, false, node, 0, false};
@@ -86,28 +107,88 @@ void reserveNodes(std::vector<gpu::GpuBvhNode>& nodes, std::uint32_t n) {
     nodes.reserve(std::size_t(n) + 1);
 }
 
+// [begin, end) as the passes over it are shared: whole when below kParallelPass or built on
+// one thread, else in blocks for all threads.
+std::vector<IndexRange> passBlocks(std::uint32_t begin, std::uint32_t end, unsigned threads) {
+    if (end - begin < kParallelPass || threads < 2) return {{begin, end}};
+    std::vector<IndexRange> blocks = splitRange(end - begin, kParallelPass / 2);
+    for (IndexRange& block : blocks)
+        block = {begin + block.begin, begin + block.end};
+    return blocks;
+}
+
+// pass(from, to) over each of passBlocks, on `threads`: its results in block order.
+template <typename Result, typename Pass>
+std::vector<Result> mapBlocks(std::uint32_t begin, std::uint32_t end, unsigned threads,
+                              const Pass& pass) {
+    const std::vector<IndexRange> blocks = passBlocks(begin, end, threads);
+    std::vector<Result> results(blocks.size());
+    parallelFor(
+        blocks.size(),
+        [&](std::size_t b) {
+            results[b] = pass(std::uint32_t(blocks[b].begin), std::uint32_t(blocks[b].end));
+        },
+        threads);
+    return results;
+}
+
+// pass(begin, end) at once when the range is below kParallelPass or one thread builds (as
+// for all but the largest nodes: no allocation, no call through parallelFor), else over
+// the blocks of passBlocks on all threads, merge(part, into) adding each block's result to
+// the first's in block order.
+template <typename Pass, typename Merge>
+auto reduceBlocks(std::uint32_t begin, std::uint32_t end, unsigned threads, const Pass& pass,
+                  const Merge& merge) {
+    using Result = std::invoke_result_t<Pass, std::uint32_t, std::uint32_t>;
+    if (end - begin < kParallelPass || threads < 2) return pass(begin, end);
+    const std::vector<Result> parts = mapBlocks<Result>(begin, end, threads, pass);
+    Result total = parts.front();
+    for (std::size_t k = 1; k < parts.size(); ++k)
+        merge(parts[k], total);
+    return total;
+}
+
 class Builder {
   public:
     Builder(const PrimitiveBounds& input, const BvhSettings& settings)
         : progress("Building the hierarchy", input.size()), boxes_(input.boxes.data()),
           sphereCount_(input.sphereCount), settings_(settings),
-          threads_(settings.threads ? settings.threads : workerThreads()),
-          centroids_(input.size() * 3) {
-        order.resize(input.size());
-        for (std::size_t id = 0; id < order.size(); ++id) {
-            order[id] = std::uint32_t(id);
-            for (std::size_t axis = 0; axis < 3; ++axis)
-                centroids_[3 * id + axis] =
-                    0.5f * (boxes_[6 * id + axis] + boxes_[6 * id + 3 + axis]);
-        }
+          threads_(settings.threads ? settings.threads : workerThreads()) {
+        resizePopulated(order, input.size());
+        resizePopulated(centroids_, input.size() * 3);
+        const std::vector<IndexRange> blocks = passBlocks(0, std::uint32_t(order.size()), threads_);
+        parallelFor(
+            blocks.size(),
+            [&](std::size_t b) {
+                for (std::size_t id = blocks[b].begin; id < blocks[b].end; ++id) {
+                    order[id] = std::uint32_t(id);
+                    for (std::size_t axis = 0; axis < 3; ++axis)
+                        centroids_[3 * id + axis] =
+                            0.5f * (boxes_[6 * id + axis] + boxes_[6 * id + 3 + axis]);
+                }
+            },
+            threads_);
     }
 
-    Range rangeOf(std::uint32_t begin, std::uint32_t end) const {
-        Range range{begin, end, {}, {}};
-        for (std::uint32_t i = begin; i < end; ++i) {
-            range.bounds.grow(box(order[i]));
-            range.centroids.grow(centroid(order[i]));
-        }
+    // threads: those the pass may take, 1 within the subtrees built at once (a pass there
+    // waiting for blocks queued behind the other subtree would stall both).
+    Range rangeOf(std::uint32_t begin, std::uint32_t end, unsigned threads = 1) const {
+        Range range = reduceBlocks(
+            begin, end, threads,
+            [&](std::uint32_t from, std::uint32_t to) {
+                Range part;
+                for (std::uint32_t i = from; i < to; ++i) {
+                    part.bounds.grow(box(order[i]));
+                    part.centroids.grow(centroid(order[i]));
+                }
+                return part;
+            },
+            [](const Range& part, Range& into) {
+                into.bounds.grow(part.bounds);
+                into.centroids.grow(part.centroids);
+            });
+        range.begin = begin;
+        range.end = end;
         return range;
     }
 
@@ -126,12 +207,14 @@ class Builder {
         const int axis = longestAxis(range.centroids);
         const float extent = range.centroids.hi[axis] - range.centroids.lo[axis];
         Range left, right;
-        bool split = extent > 0.0f && sahSplit(range, axis, left, right);
+        // The root's passes take every thread; below it the subtrees do.
+        const unsigned passThreads = depth == 0 ? threads_ : 1;
+        bool split = extent > 0.0f && sahSplit(range, axis, passThreads, left, right);
         bool withinDepth = split && depth + 1 + levelsNeeded(std::max(left.size(), right.size())) <=
                                         settings_.maxDepth;
         if (n <= settings_.maxLeafSize && (!split || !withinDepth))
             return makeLeaf(range, depth, out);
-        if (!withinDepth) medianSplit(range, axis, extent > 0.0f, left, right);
+        if (!withinDepth) medianSplit(range, axis, extent > 0.0f, passThreads, left, right);
 
         const std::uint32_t self = std::uint32_t(out.size());
         out.emplace_back();
@@ -184,25 +267,27 @@ class Builder {
 
     // The binned SAH split of range along axis, if it is cheaper than a leaf or the range
     // is too big for one. Partitions the range and fills left and right.
-    bool sahSplit(const Range& range, int axis, Range& left, Range& right) {
-        struct Bin {
-            Box bounds, centroids;
-            std::uint32_t count = 0;
-        };
+    bool sahSplit(const Range& range, int axis, unsigned threads, Range& left, Range& right) {
         const float lo = range.centroids.lo[axis];
         const float scale = float(kBins) / (range.centroids.hi[axis] - lo);
         if (!std::isfinite(scale)) return false; // a subnormal extent: nothing to bin
         auto binOf = [&](std::uint32_t id) {
             return std::min(kBins - 1, int((centroid(id, axis) - lo) * scale));
         };
-        std::array<Bin, kBins> bins;
-        for (std::uint32_t i = range.begin; i < range.end; ++i) {
-            std::uint32_t id = order[i];
-            Bin& bin = bins[binOf(id)];
-            bin.bounds.grow(box(id));
-            bin.centroids.grow(centroid(id));
-            ++bin.count;
-        }
+        const Bins bins = reduceBlocks(
+            range.begin, range.end, threads,
+            [&](std::uint32_t from, std::uint32_t to) {
+                Bins blockBins;
+                for (std::uint32_t i = from; i < to; ++i) {
+                    std::uint32_t id = order[i];
+                    Bin& bin = blockBins[binOf(id)];
+                    bin.bounds.grow(box(id));
+                    bin.centroids.grow(centroid(id));
+                    ++bin.count;
+                }
+                return blockBins;
+            },
+            mergeBins);
         // Sweep from the right for the right side's cost of each plane, then from the left.
         std::array<float, kBins - 1> rightCost{};
         Box accumulated;
@@ -249,15 +334,16 @@ class Builder {
 
     // Halves the range at the centroid median along axis (by array position when every
     // centroid is the same).
-    void medianSplit(const Range& range, int axis, bool sortByCentroid, Range& left, Range& right) {
+    void medianSplit(const Range& range, int axis, bool sortByCentroid, unsigned threads,
+                     Range& left, Range& right) {
         std::uint32_t mid = range.begin + range.size() / 2;
         if (sortByCentroid)
             std::nth_element(order.begin() + range.begin, order.begin() + mid,
                              order.begin() + range.end, [&](std::uint32_t a, std::uint32_t b) {
                                  return centroid(a, axis) < centroid(b, axis);
                              });
-        left = rangeOf(range.begin, mid);
-        right = rangeOf(mid, range.end);
+        left = rangeOf(range.begin, mid, threads);
+        right = rangeOf(mid, range.end, threads);
     }
 
     // A leaf over range; a range holding both kinds becomes an interior node over a sphere
@@ -368,7 +454,8 @@ Bvh buildBvh(const PrimitiveBounds& input, const BvhSettings& settings) {
                                     std::to_string(BVH_MAX_LEAF_COUNT));
 
     Builder builder(input, settings);
-    Range root = builder.rangeOf(0, std::uint32_t(n));
+    const unsigned threads = settings.threads ? settings.threads : workerThreads();
+    Range root = builder.rangeOf(0, std::uint32_t(n), threads);
     if (builder.levelsNeeded(root.size()) > settings.maxDepth)
         throw std::invalid_argument("buildBvh: " + std::to_string(n) +
                                     " primitives cannot fit in " +
@@ -388,20 +475,53 @@ Bvh buildBvh(const PrimitiveBounds& input, const BvhSettings& settings) {
     // The leaves in depth-first order are the leaf order, and their ranges of builder.order
     // follow one another in that order: a primitive's slot is the number of its kind before
     // it in builder.order, and a leaf's first slot that of its first primitive.
-    std::vector<std::uint32_t> slotAt(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint32_t id = builder.order[i];
-        const bool sphere = id < input.sphereCount;
-        std::vector<std::uint32_t>& slots = sphere ? bvh.sphereOrder : bvh.triangleOrder;
-        slotAt[i] = std::uint32_t(slots.size());
-        slots.push_back(sphere ? id : id - input.sphereCount);
-    }
-    for (gpu::GpuBvhNode& node : bvh.nodes)
-        for (BvhSide side : {BvhSide::Left, BvhSide::Right}) {
-            BvhChild child = bvhChild(node, side);
-            if (!child.leaf || child.count == 0) continue;
-            child.index = slotAt[child.index];
-            setBvhChild(node, side, child);
-        }
+    // On all threads: each block's spheres counted, then its slots numbered from the counts
+    // of the blocks before it.
+    const std::vector<std::uint32_t>& order = builder.order;
+    const std::vector<std::uint32_t> blockSpheres = mapBlocks<std::uint32_t>(
+        0, std::uint32_t(n), threads, [&](std::uint32_t from, std::uint32_t to) {
+            return std::uint32_t(
+                std::count_if(order.begin() + from, order.begin() + to,
+                              [&](std::uint32_t id) { return id < input.sphereCount; }));
+        });
+    const std::vector<IndexRange> blocks = passBlocks(0, std::uint32_t(n), threads);
+    std::vector<std::uint32_t> slotAt;
+    resizePopulated(slotAt, n);
+    bvh.sphereOrder.resize(input.sphereCount);
+    resizePopulated(bvh.triangleOrder, n - input.sphereCount);
+    std::vector<std::uint32_t> spheresBefore(blocks.size() + 1, 0);
+    for (std::size_t b = 0; b < blocks.size(); ++b)
+        spheresBefore[b + 1] = spheresBefore[b] + blockSpheres[b];
+    parallelFor(
+        blocks.size(),
+        [&](std::size_t b) {
+            std::uint32_t spheres = spheresBefore[b];
+            auto triangles = std::uint32_t(blocks[b].begin - spheres);
+            for (std::size_t i = blocks[b].begin; i < blocks[b].end; ++i) {
+                const std::uint32_t id = order[i];
+                if (id < input.sphereCount) {
+                    slotAt[i] = spheres;
+                    bvh.sphereOrder[spheres++] = id;
+                } else {
+                    slotAt[i] = triangles;
+                    bvh.triangleOrder[triangles++] = id - input.sphereCount;
+                }
+            }
+        },
+        threads);
+    const std::vector<IndexRange> nodeBlocks = splitRange(bvh.nodes.size(), 1 << 15);
+    parallelFor(
+        nodeBlocks.size(),
+        [&](std::size_t b) {
+            for (std::size_t k = nodeBlocks[b].begin; k < nodeBlocks[b].end; ++k)
+                for (BvhSide side : {BvhSide::Left, BvhSide::Right}) {
+                    gpu::GpuBvhNode& node = bvh.nodes[k];
+                    BvhChild child = bvhChild(node, side);
+                    if (!child.leaf || child.count == 0) continue;
+                    child.index = slotAt[child.index];
+                    setBvhChild(node, side, child);
+                }
+        },
+        threads);
     return bvh;
 }

@@ -335,6 +335,11 @@ namespace {
 
 constexpr double kSphereBoxMargin = 1.0 / 1048576.0;
 
+void writeBox(float* box, glm::vec3 lo, glm::vec3 hi) {
+    const float values[6] = {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z};
+    std::copy(values, values + 6, box);
+}
+
 void appendBox(std::vector<float>& boxes, glm::vec3 lo, glm::vec3 hi) {
     boxes.insert(boxes.end(), {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z});
 }
@@ -426,7 +431,6 @@ PrimitiveBounds boundsOf(const std::vector<Vec4>& spheres, const std::vector<Vec
     using Vec3 = glm::vec<3, typename Vec4::value_type>;
     PrimitiveBounds bounds;
     bounds.sphereCount = std::uint32_t(spheres.size());
-    bounds.boxes.reserve(6 * (spheres.size() + triangles.size()));
     for (const Vec4& sphere : spheres) {
         glm::dvec3 center(sphere);
         double magnitude =
@@ -434,12 +438,20 @@ PrimitiveBounds boundsOf(const std::vector<Vec4>& spheres, const std::vector<Vec
         double reach = double(sphere.w) + kSphereBoxMargin * magnitude;
         appendBox(bounds.boxes, Vec3(center - reach), Vec3(center + reach));
     }
-    for (const glm::uvec4& triangle : triangles) {
-        Vec3 a(positions[triangle.x]);
-        Vec3 b(positions[triangle.y]);
-        Vec3 c(positions[triangle.z]);
-        appendBox(bounds.boxes, glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c)));
-    }
+    // The triangles' boxes on all threads, each written at its place.
+    const std::size_t first = bounds.boxes.size();
+    resizePopulated(bounds.boxes, first + 6 * triangles.size());
+    const std::vector<IndexRange> blocks = splitRange(triangles.size(), 1 << 16);
+    parallelFor(blocks.size(), [&](std::size_t k) {
+        for (std::size_t t = blocks[k].begin; t < blocks[k].end; ++t) {
+            const glm::uvec4 triangle = triangles[t];
+            Vec3 a(positions[triangle.x]);
+            Vec3 b(positions[triangle.y]);
+            Vec3 c(positions[triangle.z]);
+            writeBox(bounds.boxes.data() + first + 6 * t, glm::min(a, glm::min(b, c)),
+                     glm::max(a, glm::max(b, c)));
+        }
+    });
     return bounds;
 }
 
@@ -463,9 +475,13 @@ void applyLeafOrder(PackedScene& packed, const Bvh& bvh) {
         sphereMaterials[slot] = packed.sphereMaterials[bvh.sphereOrder[slot]];
         if (!spheres64.empty()) spheres64[slot] = packed.spheres64[bvh.sphereOrder[slot]];
     }
-    std::vector<glm::uvec4> triangles(packed.triangles.size());
-    for (std::size_t slot = 0; slot < bvh.triangleOrder.size(); ++slot)
-        triangles[slot] = packed.triangles[bvh.triangleOrder[slot]];
+    std::vector<glm::uvec4> triangles;
+    resizePopulated(triangles, packed.triangles.size());
+    const std::vector<IndexRange> blocks = splitRange(triangles.size(), 1 << 16);
+    parallelFor(blocks.size(), [&](std::size_t k) {
+        for (std::size_t slot = blocks[k].begin; slot < blocks[k].end; ++slot)
+            triangles[slot] = packed.triangles[bvh.triangleOrder[slot]];
+    });
     packed.spheres = std::move(spheres);
     packed.spheres64 = std::move(spheres64);
     packed.sphereMaterials = std::move(sphereMaterials);

@@ -375,8 +375,10 @@ TEST(Bvh, TwoHundredThousandTrianglesBuild) {
 }
 
 TEST(Bvh, TheTreeIsTheSameOnOneThreadAsOnSeveral) {
-    // Large enough that the top subtrees are built at once (kParallelMinimum in bvh.cpp).
-    const PrimitiveBounds input = randomScene(500, 70000);
+    // Large enough that the top subtrees are built at once (kParallelMinimum in bvh.cpp), and
+    // that the root's passes and the slots' numbering run in blocks (kParallelPass), with
+    // spheres in every block.
+    const PrimitiveBounds input = randomScene(60000, 240000);
     BvhSettings one, four;
     one.threads = 1;
     four.threads = 4;
