@@ -358,6 +358,10 @@ void appendBox(std::vector<float>& boxes, glm::dvec3 lo, glm::dvec3 hi) {
     appendBox(boxes, roundOutward(lo, -1.0f), roundOutward(hi, 1.0f));
 }
 
+void writeBox(float* box, glm::dvec3 lo, glm::dvec3 hi) {
+    writeBox(box, roundOutward(lo, -1.0f), roundOutward(hi, 1.0f));
+}
+
 } // namespace
 
 GpuTriangleArrayBytes gpuTriangleArrayBytes(const PackedScene& packed) {
