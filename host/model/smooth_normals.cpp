@@ -1,6 +1,7 @@
 #include "model/smooth_normals.h"
 
 #include "base/parallel.h"
+#include "base/populated_memory.h"
 #include "model/exact_vectors.h"
 
 #include <algorithm>
@@ -58,8 +59,10 @@ SmoothNormals::SmoothNormals(const SourceModel& model, const std::vector<glm::dv
     : cosine_(std::cos(creaseDegrees * (kPi / 180.0))), everywhere_(creaseDegrees >= 180.0) {
     const std::size_t faces = faceCount(model);
     const double scale = newellScale(positions);
-    newell_.resize(faces);
-    unit_.resize(faces);
+    // Their pages mapped on all threads: a fresh page's first touch costs more than what is
+    // written into it (base/populated_memory.h).
+    resizePopulated(newell_, faces);
+    resizePopulated(unit_, faces);
     const std::vector<IndexRange> ranges = splitRange(faces, 4096);
     parallelFor(ranges.size(), [&](std::size_t k) {
         for (std::size_t f = ranges[k].begin; f < ranges[k].end; ++f) {
@@ -69,7 +72,7 @@ SmoothNormals::SmoothNormals(const SourceModel& model, const std::vector<glm::dv
     });
     // The faces around each position in one array, each face once though its position
     // repeats: counted, then placed.
-    start_.assign(positions.size() + 1, 0);
+    resizePopulated(start_, positions.size() + 1);
     auto eachCorner = [&](auto visit) {
         for (std::size_t f = 0; f < faces; ++f)
             if (leftOut.empty() || !leftOut[f])
@@ -82,7 +85,7 @@ SmoothNormals::SmoothNormals(const SourceModel& model, const std::vector<glm::dv
     });
     for (std::size_t p = 0; p < positions.size(); ++p)
         start_[p + 1] += start_[p];
-    faces_.resize(start_.back());
+    resizePopulated(faces_, start_.back());
     std::copy(start_.begin(), start_.end() - 1, next.begin()); // where p's next face goes
     eachCorner([&](std::uint32_t f, std::uint32_t p) {
         if (next[p] == start_[p] || faces_[next[p] - 1] != f) faces_[next[p]++] = f;
