@@ -11,11 +11,12 @@ TriangleLayoutBytes triangleLayoutBytes(const PackedScene& packed) {
             triangles * sizeof(glm::uvec4) + vertices * position};
 }
 
-bool indexedTriangles(const PackedScene& packed, TriangleLayout layout, bool cornersFit) {
+bool indexedTriangles(const PackedScene& packed, TriangleLayout layout, const LayoutRoom& room) {
     if (layout != TriangleLayout::Auto) return layout == TriangleLayout::Indexed;
-    if (!cornersFit) return true;
+    if (!room.cornersFit) return true;
     const TriangleLayoutBytes bytes = triangleLayoutBytes(packed);
-    return packed.triangles.size() >= kIndexedAutoTriangles && bytes.indexed < bytes.corners;
+    return room.deviceMemory > 0 && bytes.corners > room.deviceMemory / kCornersShareOfMemory &&
+           bytes.indexed < bytes.corners;
 }
 
 void allowTriangleLayouts(SceneCapacity& capacity, TriangleLayout layout) {

@@ -25,15 +25,20 @@ struct TriangleLayoutBytes {
 };
 TriangleLayoutBytes triangleLayoutBytes(const PackedScene& packed);
 
-// Auto takes indexed triangles for a scene of this many triangles or more when they take
-// fewer bytes than corners (a mesh whose triangles share their vertices; not one whose
-// triangles each have their own three, as in the classic scenes with a material a vertex).
-// Smaller scenes keep corners, the faster to trace, whose bytes are then no concern.
-constexpr std::size_t kIndexedAutoTriangles = 1000000;
+// What Auto weighs of the device.
+struct LayoutRoom {
+    bool cornersFit = true;         // the corners are within its limits (scene_capacity.h)
+    std::uint64_t deviceMemory = 0; // its largest device-local heap in bytes; 0: not known
+};
 
-// Whether the scene's triangles go indexed: as asked, or for Auto as above, or when the
-// corners would not fit the device (cornersFit false).
-bool indexedTriangles(const PackedScene& packed, TriangleLayout layout, bool cornersFit);
+// Auto keeps corners, the faster to trace (indexed costs lavapipe 5-8% of a frame at a
+// million triangles), unless they do not fit the device, or take more than this share of
+// its memory where indexed takes fewer bytes (a mesh whose triangles share their vertices;
+// not one whose triangles each have their own three, as the classic scenes').
+constexpr std::uint64_t kCornersShareOfMemory = 8; // 1/8
+
+// Whether the scene's triangles go indexed: as asked, or for Auto as above.
+bool indexedTriangles(const PackedScene& packed, TriangleLayout layout, const LayoutRoom& room);
 
 // Lets the early check (scene_capacity.h) count the layouts `layout` may take: one, or
 // for Auto both.

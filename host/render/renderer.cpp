@@ -4,6 +4,7 @@
 #include "base/release.h"
 #include "base/scope_guard.h"
 #include "base/startup_phases.h"
+#include "gpu/image_limits.h"
 #include "gpu/vk_check.h"
 #include "packing/workgroup_order.h"
 #include "render/bindings.h"
@@ -288,14 +289,13 @@ void createRendererFrom(Renderer& renderer, const Context& context, const Scene&
     renderer.sources = slotSources(std::move(lines), packed);
     renderer.specialization = traceSpecialization(packed, settings);
     {
-        // Auto takes indexed triangles also where the corners would not fit the device.
         SceneCapacity corners =
             sceneCapacityOf(context, !settings.storageReads, precision == Precision::Fp64);
         allowTriangleLayouts(corners, TriangleLayout::Corners);
-        const bool cornersFit = packed.triangles.size() <= triangleCapacity(corners).triangles;
+        const LayoutRoom room{packed.triangles.size() <= triangleCapacity(corners).triangles,
+                              imageLimitsOf(context).largestDeviceLocalHeap};
         renderer.specialization.indexedTriangles =
-            !packed.triangles.empty() &&
-            indexedTriangles(packed, settings.triangleLayout, cornersFit);
+            !packed.triangles.empty() && indexedTriangles(packed, settings.triangleLayout, room);
     }
     {
         const PhaseTimer timer("upload");

@@ -190,31 +190,32 @@ TEST(ScenePacking, TrianglesGoToTheKernelAsCornersWithTheirVertexIndices) {
     EXPECT_EQ(exact.corners64[8], glm::dvec4(1, 1, -5, 1)); // its corner 2, d; b is vertex 1
 }
 
-// Auto's choice (packing/triangle_layout.h): indexed for a large mesh whose triangles share
-// their vertices, corners below the size or where indexed would take more bytes, and indexed
-// whatever the size where the corners do not fit the device.
-TEST(TriangleLayout, AutoIsIndexedForALargeSharedMeshOrWhereCornersDoNotFit) {
+// Auto's choice (packing/triangle_layout.h): corners wherever they fit the device and take
+// at most an eighth of its memory; indexed where they do not fit, or take more and indexed
+// takes fewer bytes; and as asked.
+TEST(TriangleLayout, AutoKeepsCornersUnlessTheyCrowdOrDoNotFitTheDevice) {
+    const std::size_t triangles = 1000000;
     PackedScene packed;
-    packed.triangles.resize(kIndexedAutoTriangles);
-    packed.vertexPositions.resize(kIndexedAutoTriangles / 2); // a closed mesh's share
+    packed.triangles.resize(triangles);
+    packed.vertexPositions.resize(triangles / 2); // a closed mesh's share
     const TriangleLayoutBytes bytes = triangleLayoutBytes(packed);
-    EXPECT_EQ(bytes.corners, 52u * kIndexedAutoTriangles);
-    EXPECT_EQ(bytes.indexed, 16u * kIndexedAutoTriangles + 16u * kIndexedAutoTriangles / 2);
-    EXPECT_TRUE(indexedTriangles(packed, TriangleLayout::Auto, true));
-    EXPECT_FALSE(indexedTriangles(packed, TriangleLayout::Corners, false));
+    EXPECT_EQ(bytes.corners, 52u * triangles);
+    EXPECT_EQ(bytes.indexed, 16u * triangles + 16u * triangles / 2);
+    const std::uint64_t roomy = 8 * bytes.corners, crowded = 8 * bytes.corners - 8;
+    EXPECT_FALSE(indexedTriangles(packed, TriangleLayout::Auto, {true, roomy}));
+    EXPECT_FALSE(indexedTriangles(packed, TriangleLayout::Auto, {true, 0})); // memory unknown
+    EXPECT_TRUE(indexedTriangles(packed, TriangleLayout::Auto, {true, crowded}));
+    EXPECT_TRUE(indexedTriangles(packed, TriangleLayout::Auto, {false, roomy}));
+    EXPECT_TRUE(indexedTriangles(packed, TriangleLayout::Indexed, {true, roomy}));
+    EXPECT_FALSE(indexedTriangles(packed, TriangleLayout::Corners, {false, crowded}));
 
-    packed.vertexPositions.resize(3 * kIndexedAutoTriangles); // each triangle its own three
+    packed.vertexPositions.resize(3 * triangles); // each triangle its own three
     EXPECT_GT(triangleLayoutBytes(packed).indexed, triangleLayoutBytes(packed).corners);
-    EXPECT_FALSE(indexedTriangles(packed, TriangleLayout::Auto, true));
-    EXPECT_TRUE(indexedTriangles(packed, TriangleLayout::Auto, false));
-    EXPECT_TRUE(indexedTriangles(packed, TriangleLayout::Indexed, true));
-
-    packed.triangles.resize(kIndexedAutoTriangles - 1);
-    packed.vertexPositions.resize(kIndexedAutoTriangles / 2);
-    EXPECT_FALSE(indexedTriangles(packed, TriangleLayout::Auto, true));
+    EXPECT_FALSE(indexedTriangles(packed, TriangleLayout::Auto, {true, crowded}));
+    EXPECT_TRUE(indexedTriangles(packed, TriangleLayout::Auto, {false, roomy}));
 
     packed.vertexPositions64.resize(packed.vertexPositions.size()); // fp64: doubles
-    EXPECT_EQ(triangleLayoutBytes(packed).corners, 100u * (kIndexedAutoTriangles - 1));
+    EXPECT_EQ(triangleLayoutBytes(packed).corners, 100u * triangles);
 }
 
 TEST(ScenePacking, VerticesDifferingOnlyInMaterialStaySeparate) {
