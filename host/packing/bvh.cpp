@@ -170,8 +170,8 @@ class Builder {
             threads_);
     }
 
-    // threads: those the pass may take, 1 within the subtrees built at once (a pass there
-    // waiting for blocks queued behind the other subtree would stall both).
+    // threads: those the pass may take; 1 below the root, where the subtrees built at once
+    // already keep the threads busy.
     Range rangeOf(std::uint32_t begin, std::uint32_t end, unsigned threads = 1) const {
         Range range = reduceBlocks(
             begin, end, threads,

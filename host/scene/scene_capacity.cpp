@@ -16,10 +16,6 @@ std::uint64_t arrayRoom(std::uint64_t maxBytes, std::uint64_t alignment) {
     return usable > alignment ? usable - alignment : 0;
 }
 
-} // namespace
-
-namespace {
-
 // The most triangles of one layout: bytesPerTriangle in the largest array, read through a
 // texel view of texelsPerTriangle when texelReads (0: never).
 TriangleCapacity layoutCapacity(const SceneCapacity& capacity, std::uint64_t bytesPerTriangle,
