@@ -7,8 +7,12 @@
 // partitioned in place in one array. An interior node is written depth first straight into
 // the output array when it is reached, and gets its children's references (box, node index
 // or leaf) once they are built, so the left child of a node, if interior, is the next node;
-// a leaf is only a reference in its parent (shared.h). The two top levels build their
-// subtrees on separate threads, each into its own array, spliced afterwards.
+// a leaf is only a reference in its parent (shared.h).
+//
+// On several threads the top levels are split one level at a time, the nodes of a level at
+// once, until every range left is below a task size; those ranges are then built as tasks,
+// the largest first, each into its own array, and copied into place. The nodes' order is
+// the depth-first order of the one-thread build, and so is every split: the tree is the same.
 //
 // Depth: traversal keeps at most one stack entry per level, so no leaf may be deeper
 // than settings.maxDepth. A node whose SAH split could leave a child deeper than median
@@ -27,6 +31,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -34,10 +39,13 @@
 namespace {
 
 constexpr int kBins = 16;
-// Subtrees at least this big, at depths below kParallelDepth, go to a second thread:
-// depth 0 and 1 give up to four concurrent subtrees, enough to balance uneven splits.
-constexpr std::uint32_t kParallelMinimum = 16384;
-constexpr std::uint32_t kParallelDepth = 2;
+// On several threads, ranges below a task size are built whole by one thread: about
+// kTasksPerThread tasks a thread, so that the last to finish leaves the others idle for
+// little of the build, and none below kSmallestTask, whose hand-out would cost more than
+// it shares.
+constexpr std::uint32_t kTasksPerThread = 16;
+constexpr std::uint32_t kSmallestTask = 16384;
+static_assert(kSmallestTask > BVH_MAX_LEAF_COUNT, "a range above the task size is never a leaf");
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
@@ -199,55 +207,184 @@ class Builder {
         return std::uint32_t(std::bit_width(std::max(leaves, 1u) - 1)) + 1;
     }
 
-    // Writes the interior nodes of the subtree over range depth first to out.
-    Subtree build(const Range& range, std::uint32_t depth, std::vector<gpu::GpuBvhNode>& out) {
-        const std::uint32_t n = range.size();
-        if (n == 1) return makeLeaf(range, depth, out);
-
-        const int axis = longestAxis(range.centroids);
-        const float extent = range.centroids.hi[axis] - range.centroids.lo[axis];
-        Range left, right;
-        // The root's passes take every thread; below it the subtrees do.
-        const unsigned passThreads = depth == 0 ? threads_ : 1;
-        bool split = extent > 0.0f && sahSplit(range, axis, passThreads, left, right);
-        bool withinDepth = split && depth + 1 + levelsNeeded(std::max(left.size(), right.size())) <=
-                                        settings_.maxDepth;
-        if (n <= settings_.maxLeafSize && (!split || !withinDepth))
-            return makeLeaf(range, depth, out);
-        if (!withinDepth) medianSplit(range, axis, extent > 0.0f, passThreads, left, right);
-
-        const std::uint32_t self = std::uint32_t(out.size());
-        out.emplace_back();
-        Subtree leftTree, rightTree;
-        if (depth < kParallelDepth && n >= kParallelMinimum && threads_ > 1) {
-            std::vector<gpu::GpuBvhNode> leftNodes, rightNodes;
-            reserveNodes(leftNodes, left.size());
-            reserveNodes(rightNodes, right.size());
-            parallelFor(
-                2,
-                [&](std::size_t side) {
-                    if (side == 0)
-                        leftTree = build(left, depth + 1, leftNodes);
-                    else
-                        rightTree = build(right, depth + 1, rightNodes);
-                },
-                2);
-            splice(leftNodes, leftTree.child, out);
-            release(leftNodes);
-            splice(rightNodes, rightTree.child, out);
-        } else {
-            leftTree = build(left, depth + 1, out);
-            rightTree = build(right, depth + 1, out);
-        }
-        setBvhChild(out[self], BvhSide::Left, leftTree.child);
-        setBvhChild(out[self], BvhSide::Right, rightTree.child);
-        return {interiorChild(range.bounds, self), std::max(leftTree.depth, rightTree.depth)};
+    // Writes the interior nodes of the tree over root depth first to out: on one thread as
+    // build does, else in tasks (buildInTasks).
+    Subtree buildTree(const Range& root, std::vector<gpu::GpuBvhNode>& out) {
+        if (threads_ < 2) return build(root, 0, out);
+        return buildInTasks(root, out);
     }
+
+    unsigned threads() const { return threads_; }
 
     std::vector<std::uint32_t> order; // primitive ids; each leaf owns a consecutive range
     PhaseProgress progress;           // the primitives in leaves so far
 
   private:
+    // How the node over range is made: a leaf, or an interior node over left and right
+    // (order partitioned between them). passThreads: those its passes may take.
+    struct Split {
+        bool leaf = true;
+        Range left, right;
+    };
+    Split splitOf(const Range& range, std::uint32_t depth, unsigned passThreads) {
+        const std::uint32_t n = range.size();
+        if (n == 1) return {};
+        const int axis = longestAxis(range.centroids);
+        const float extent = range.centroids.hi[axis] - range.centroids.lo[axis];
+        Split split{false, {}, {}};
+        const bool binned =
+            extent > 0.0f && sahSplit(range, axis, passThreads, split.left, split.right);
+        const bool withinDepth =
+            binned && depth + 1 + levelsNeeded(std::max(split.left.size(), split.right.size())) <=
+                          settings_.maxDepth;
+        if (n <= settings_.maxLeafSize && (!binned || !withinDepth)) return {};
+        if (!withinDepth)
+            medianSplit(range, axis, extent > 0.0f, passThreads, split.left, split.right);
+        return split;
+    }
+
+    // Writes the interior nodes of the subtree over range depth first to out, on this thread.
+    Subtree build(const Range& range, std::uint32_t depth, std::vector<gpu::GpuBvhNode>& out) {
+        const Split split = splitOf(range, depth, 1);
+        if (split.leaf) return makeLeaf(range, depth, out);
+        const std::uint32_t self = std::uint32_t(out.size());
+        out.emplace_back();
+        const Subtree left = build(split.left, depth + 1, out);
+        const Subtree right = build(split.right, depth + 1, out);
+        setBvhChild(out[self], BvhSide::Left, left.child);
+        setBvhChild(out[self], BvhSide::Right, right.child);
+        return {interiorChild(range.bounds, self), std::max(left.depth, right.depth)};
+    }
+
+    // A node of the top levels: interior, over two top nodes or tasks (their indices, a
+    // task's marked by kTaskBit).
+    static constexpr std::uint32_t kTaskBit = 1u << 31;
+    struct TopNode {
+        Range range;
+        std::uint32_t depth = 0;
+        std::uint32_t left = 0, right = 0;
+    };
+    // A range below the task size, built whole on one thread into its own array.
+    struct Task {
+        Range range;
+        std::uint32_t depth = 0;
+        std::vector<gpu::GpuBvhNode> nodes; // the subtree's, numbered from 0
+        Subtree tree;
+        std::size_t offset = 0; // where its nodes go in the output
+    };
+    struct TopLevels {
+        std::vector<TopNode> nodes; // the root first
+        std::vector<Task> tasks;
+    };
+
+    Subtree buildInTasks(const Range& root, std::vector<gpu::GpuBvhNode>& out) {
+        const std::uint32_t taskSize =
+            std::max(kSmallestTask, root.size() / (kTasksPerThread * threads_));
+        if (root.size() < taskSize) return build(root, 0, out);
+        TopLevels top = splitTopLevels(root, taskSize);
+        buildTasks(top.tasks);
+        return assemble(top, out);
+    }
+
+    // The top levels split a level at a time, until every range left is below taskSize:
+    // a level's nodes at once (the largest first), each on one thread, or one node's on all.
+    TopLevels splitTopLevels(const Range& root, std::uint32_t taskSize) {
+        TopLevels top;
+        top.nodes.push_back({root, 0});
+        // A child: a top node of the next level, or a task.
+        auto place = [&](const Range& range, std::uint32_t depth,
+                         std::vector<std::uint32_t>& next) {
+            if (range.size() < taskSize) {
+                top.tasks.push_back({range, depth, {}, {}, 0});
+                return std::uint32_t(top.tasks.size() - 1) | kTaskBit;
+            }
+            top.nodes.push_back({range, depth});
+            next.push_back(std::uint32_t(top.nodes.size() - 1));
+            return next.back();
+        };
+        for (std::vector<std::uint32_t> level{0}; !level.empty();) {
+            std::sort(level.begin(), level.end(), [&](std::uint32_t a, std::uint32_t b) {
+                return top.nodes[a].range.size() > top.nodes[b].range.size();
+            });
+            std::vector<Split> splits(level.size());
+            const unsigned passThreads = level.size() == 1 ? threads_ : 1;
+            parallelFor(
+                level.size(),
+                [&](std::size_t k) {
+                    const TopNode& node = top.nodes[level[k]];
+                    splits[k] = splitOf(node.range, node.depth, passThreads);
+                },
+                threads_);
+            std::vector<std::uint32_t> next;
+            for (std::size_t k = 0; k < level.size(); ++k) {
+                const std::uint32_t depth = top.nodes[level[k]].depth + 1;
+                const std::uint32_t left = place(splits[k].left, depth, next);
+                const std::uint32_t right = place(splits[k].right, depth, next);
+                top.nodes[level[k]].left = left;
+                top.nodes[level[k]].right = right;
+            }
+            level = std::move(next);
+        }
+        return top;
+    }
+
+    // Every task built, the largest first, so that a large one does not start last.
+    void buildTasks(std::vector<Task>& tasks) {
+        std::vector<std::size_t> bySize(tasks.size());
+        std::iota(bySize.begin(), bySize.end(), std::size_t(0));
+        std::stable_sort(bySize.begin(), bySize.end(), [&](std::size_t a, std::size_t b) {
+            return tasks[a].range.size() > tasks[b].range.size();
+        });
+        parallelFor(
+            tasks.size(),
+            [&](std::size_t k) {
+                Task& task = tasks[bySize[k]];
+                reserveNodes(task.nodes, task.range.size());
+                task.tree = build(task.range, task.depth, task.nodes);
+            },
+            threads_);
+    }
+
+    // The top nodes and the tasks' nodes written to out in the order build would have
+    // written them (depth first), and the top nodes' children set.
+    Subtree assemble(TopLevels& top, std::vector<gpu::GpuBvhNode>& out) {
+        std::vector<std::size_t> placeOf(top.nodes.size());
+        std::size_t count = out.size();
+        auto number = [&](auto& self, std::uint32_t reference) -> void {
+            if (reference & kTaskBit) {
+                Task& task = top.tasks[reference & ~kTaskBit];
+                task.offset = count;
+                count += task.nodes.size();
+                return;
+            }
+            placeOf[reference] = count++;
+            self(self, top.nodes[reference].left);
+            self(self, top.nodes[reference].right);
+        };
+        number(number, 0);
+        resizePopulated(out, count);
+        parallelFor(
+            top.tasks.size(),
+            [&](std::size_t k) {
+                Task& task = top.tasks[k];
+                moveNodes(task.nodes, task.offset, out);
+                if (!task.tree.child.leaf) task.tree.child.index += std::uint32_t(task.offset);
+                release(task.nodes);
+            },
+            threads_);
+        auto link = [&](auto& self, std::uint32_t reference) -> Subtree {
+            if (reference & kTaskBit) return top.tasks[reference & ~kTaskBit].tree;
+            const TopNode& node = top.nodes[reference];
+            const Subtree left = self(self, node.left), right = self(self, node.right);
+            gpu::GpuBvhNode& written = out[placeOf[reference]];
+            setBvhChild(written, BvhSide::Left, left.child);
+            setBvhChild(written, BvhSide::Right, right.child);
+            return {interiorChild(node.range.bounds, std::uint32_t(placeOf[reference])),
+                    std::max(left.depth, right.depth)};
+        };
+        return link(link, 0);
+    }
+
     Box box(std::uint32_t id) const {
         const float* b = boxes_ + 6 * std::size_t(id);
         return {{b[0], b[1], b[2]}, {b[3], b[4], b[5]}};
@@ -366,82 +503,30 @@ class Builder {
         return {interiorChild(range.bounds, self), depth + 1};
     }
 
-    // Appends a subtree built in its own array, moving its node indices along: those of its
-    // nodes' interior children and that of its own reference, if interior.
-    static void splice(const std::vector<gpu::GpuBvhNode>& subtree, BvhChild& root,
-                       std::vector<gpu::GpuBvhNode>& out) {
-        const std::uint32_t offset = std::uint32_t(out.size());
-        for (gpu::GpuBvhNode node : subtree) {
-            for (BvhSide side : {BvhSide::Left, BvhSide::Right}) {
-                BvhChild child = bvhChild(node, side);
-                if (child.leaf) continue;
-                child.index += offset;
-                setBvhChild(node, side, child);
-            }
-            out.push_back(node);
+    // Writes a subtree built in its own array to out from offset on, moving the node
+    // indices of its nodes' interior children along (a reference below BVH_LEAF is one).
+    static void moveNodes(const std::vector<gpu::GpuBvhNode>& subtree, std::size_t offset,
+                          std::vector<gpu::GpuBvhNode>& out) {
+        auto moved = [&](float reference) {
+            const auto bits = std::bit_cast<std::uint32_t>(reference);
+            return std::bit_cast<float>(bits & BVH_LEAF ? bits : bits + std::uint32_t(offset));
+        };
+        for (std::size_t k = 0; k < subtree.size(); ++k) {
+            gpu::GpuBvhNode node = subtree[k];
+            node.leftMinAndRef.w = moved(node.leftMinAndRef.w);
+            node.rightMinAndRef.w = moved(node.rightMinAndRef.w);
+            out[offset + k] = node;
         }
-        if (!root.leaf) root.index += offset;
     }
 
     const float* boxes_;
     std::uint32_t sphereCount_;
     BvhSettings settings_;
-    unsigned threads_;             // above 1: the top subtrees are built two at a time
+    unsigned threads_;             // above 1: the build runs in tasks (buildInTasks)
     std::vector<float> centroids_; // 3 floats per primitive
 };
 
-// The two sides of a node's fields (shared.h).
-struct ChildFields {
-    const glm::vec4& minAndRef;
-    const glm::vec4& max;
-};
-
-ChildFields fields(const gpu::GpuBvhNode& node, BvhSide side) {
-    if (side == BvhSide::Left) return {node.leftMinAndRef, node.leftMax};
-    return {node.rightMinAndRef, node.rightMax};
-}
-
 } // namespace
-
-BvhChild bvhChild(const gpu::GpuBvhNode& node, BvhSide side) {
-    const ChildFields f = fields(node, side);
-    const std::uint32_t reference = std::bit_cast<std::uint32_t>(f.minAndRef.w);
-    BvhChild child{glm::vec3(f.minAndRef), glm::vec3(f.max)};
-    child.leaf = (reference & BVH_LEAF) != 0;
-    if (!child.leaf) {
-        child.index = reference;
-        return child;
-    }
-    child.index = reference & BVH_FIRST_MASK;
-    child.count = (reference >> BVH_COUNT_SHIFT) & BVH_MAX_LEAF_COUNT;
-    child.spheres = (reference & BVH_LEAF_SPHERES) != 0;
-    return child;
-}
-
-void setBvhChild(gpu::GpuBvhNode& node, BvhSide side, const BvhChild& child) {
-    if (child.leaf && child.count > BVH_MAX_LEAF_COUNT)
-        throw std::invalid_argument("setBvhChild: a leaf of " + std::to_string(child.count) +
-                                    " primitives does not fit its count field");
-    if (child.leaf && child.index > BVH_FIRST_MASK)
-        throw std::invalid_argument("setBvhChild: a leaf's first primitive " +
-                                    std::to_string(child.index) + " does not fit its reference");
-    if (!child.leaf && child.index >= BVH_LEAF)
-        throw std::invalid_argument("setBvhChild: node index " + std::to_string(child.index) +
-                                    " does not fit its reference");
-    const std::uint32_t reference = child.leaf
-                                        ? BVH_LEAF | (child.spheres ? BVH_LEAF_SPHERES : 0u) |
-                                              child.count << BVH_COUNT_SHIFT | child.index
-                                        : child.index;
-    const glm::vec4 minAndRef(child.lo, std::bit_cast<float>(reference));
-    const glm::vec4 max(child.hi, 0.0f);
-    if (side == BvhSide::Left) {
-        node.leftMinAndRef = minAndRef;
-        node.leftMax = max;
-    } else {
-        node.rightMinAndRef = minAndRef;
-        node.rightMax = max;
-    }
-}
 
 Bvh buildBvh(const PrimitiveBounds& input, const BvhSettings& settings) {
     Bvh bvh;
@@ -454,14 +539,14 @@ Bvh buildBvh(const PrimitiveBounds& input, const BvhSettings& settings) {
                                     std::to_string(BVH_MAX_LEAF_COUNT));
 
     Builder builder(input, settings);
-    const unsigned threads = settings.threads ? settings.threads : workerThreads();
+    const unsigned threads = builder.threads();
     Range root = builder.rangeOf(0, std::uint32_t(n), threads);
     if (builder.levelsNeeded(root.size()) > settings.maxDepth)
         throw std::invalid_argument("buildBvh: " + std::to_string(n) +
                                     " primitives cannot fit in " +
                                     std::to_string(settings.maxDepth) + " levels");
     reserveNodes(bvh.nodes, std::uint32_t(n));
-    const Subtree tree = builder.build(root, 0, bvh.nodes);
+    const Subtree tree = builder.buildTree(root, bvh.nodes);
     bvh.depth = tree.depth;
     if (tree.child.leaf) {
         // The shader starts at node 0, an interior node: the lone leaf gets one, with an

@@ -4,6 +4,7 @@
 // Knows nothing of Vulkan or of the scene file: it sees one box per primitive.
 #pragma once
 
+#include "packing/bvh_node.h"
 #include "shared.h"
 
 #include <cstddef>
@@ -35,8 +36,9 @@ struct BvhSettings {
     std::uint32_t maxLeafSize = 8;           // a range at most this big may become a leaf
     std::uint32_t maxDepth = BVH_STACK_SIZE; // no leaf deeper (root at depth 0)
     float traversalCost = 2.0f; // cost of visiting a node (two box tests), in primitive tests
-    // Above 1, the top levels' two subtrees are built at once (up to four threads in all);
-    // 0: workerThreads() (base/parallel.h). The tree is the same for every count.
+    // Above 1, the top levels' nodes are split at once, then the subtrees below them built
+    // as tasks on that many threads; 0: workerThreads() (base/parallel.h). The tree is the
+    // same for every count.
     std::uint32_t threads = 0;
 };
 
@@ -52,19 +54,3 @@ struct Bvh {
 // Builds the hierarchy. Every primitive ends in exactly one leaf; every leaf holds one
 // kind and its slots are consecutive. An empty input gives an empty hierarchy.
 Bvh buildBvh(const PrimitiveBounds& bounds, const BvhSettings& settings = {});
-
-// A node's child reference (shared.h), decoded: what the shader reads from one side.
-struct BvhChild {
-    glm::vec3 lo{0.0f}, hi{0.0f}; // its box
-    bool leaf = false;
-    std::uint32_t index = 0; // interior: its node index; leaf: its first primitive slot
-    std::uint32_t count = 0; // leaf: its primitive count (0: the empty leaf of a lone root leaf)
-    bool spheres = false;    // leaf: its primitives are spheres, else triangles
-    bool operator==(const BvhChild&) const = default;
-};
-
-enum class BvhSide { Left, Right };
-
-BvhChild bvhChild(const gpu::GpuBvhNode& node, BvhSide side);
-// Stores child on that side of node; throws when a leaf's count does not fit its word.
-void setBvhChild(gpu::GpuBvhNode& node, BvhSide side, const BvhChild& child);

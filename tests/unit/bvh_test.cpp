@@ -375,9 +375,9 @@ TEST(Bvh, TwoHundredThousandTrianglesBuild) {
 }
 
 TEST(Bvh, TheTreeIsTheSameOnOneThreadAsOnSeveral) {
-    // Large enough that the top subtrees are built at once (kParallelMinimum in bvh.cpp), and
-    // that the root's passes and the slots' numbering run in blocks (kParallelPass), with
-    // spheres in every block.
+    // Large enough that the top levels are split at once and the rest built in tasks
+    // (kSmallestTask in bvh.cpp), and that the root's passes and the slots' numbering run in
+    // blocks (kParallelPass), with spheres in every block.
     const PrimitiveBounds input = randomScene(60000, 240000);
     BvhSettings one, four;
     one.threads = 1;
