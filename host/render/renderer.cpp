@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include "base/notes.h"
+#include "base/parallel.h"
 #include "base/release.h"
 #include "base/scope_guard.h"
 #include "base/startup_phases.h"
@@ -297,26 +298,40 @@ void createRendererFrom(Renderer& renderer, const Context& context, const Scene&
         renderer.specialization.indexedTriangles =
             !packed.triangles.empty() && indexedTriangles(packed, settings.triangleLayout, room);
     }
-    {
-        const PhaseTimer timer("upload");
-        // packed's arrays go as they are written: the GPU holds them now.
-        renderer.scene = uploadScene(context, std::move(packed),
-                                     {renderer.specialization.texelReads != VK_FALSE,
-                                      renderer.specialization.indexedTriangles != VK_FALSE});
+    const KernelSource source{settings.shaderDirectory, settings.cacheDirectory};
+    auto loadKernel = [&] {
+        const PhaseTimer kernelTimer("kernel");
+        if (kernels) {
+            renderer.pipeline =
+                cachedTracePipeline(*kernels, context, source, renderer.specialization, precision);
+            renderer.pipelineShared = true;
+        } else {
+            renderer.pipeline =
+                loadTracePipeline(context, source, renderer.specialization, precision);
+        }
+    };
+    // The kernel compiles on a second thread while the scene uploads (the two phases' times
+    // overlap), for the texel reads asked for.
+    parallelFor(
+        2,
+        [&](std::size_t part) {
+            if (part == 1) return loadKernel();
+            const PhaseTimer timer("upload");
+            // packed's arrays go as they are written: the GPU holds them now.
+            renderer.scene = uploadScene(context, std::move(packed),
+                                         {renderer.specialization.texelReads != VK_FALSE,
+                                          renderer.specialization.indexedTriangles != VK_FALSE});
+        },
+        2);
+    // The upload turns texel reads off for an array beyond maxTexelBufferElements: the
+    // kernel is then compiled again, for storage-buffer reads.
+    if (renderer.scene.texelReads != (renderer.specialization.texelReads != VK_FALSE)) {
+        if (!renderer.pipelineShared) destroyTracePipeline(context, renderer.pipeline);
+        renderer.specialization.texelReads = renderer.scene.texelReads;
+        loadKernel();
     }
-    // The upload turns texel reads off for an array beyond maxTexelBufferElements.
-    renderer.specialization.texelReads = renderer.scene.texelReads;
     if (!renderer.scene.storageReadsNote.empty())
         note("%s\n", renderer.scene.storageReadsNote.c_str());
-    const KernelSource source{settings.shaderDirectory, settings.cacheDirectory};
-    const PhaseTimer kernelTimer("kernel");
-    if (kernels) {
-        renderer.pipeline =
-            cachedTracePipeline(*kernels, context, source, renderer.specialization, precision);
-        renderer.pipelineShared = true;
-    } else {
-        renderer.pipeline = loadTracePipeline(context, source, renderer.specialization, precision);
-    }
     const std::size_t primitives = renderer.scene.sphereCount + renderer.scene.triangleCount;
     if (primitives > 0 && renderer.scene.textureBytes > 0)
         note("Scene memory: %llu bytes, %.1f bytes per primitive; textures %llu of them\n",

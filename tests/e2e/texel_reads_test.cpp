@@ -3,7 +3,10 @@
 // reachable on any device): both paths give the same bytes, in fp32 and in fp64 (whose
 // doubles are always read from storage).
 #include "gpu/context.h"
+#include "render/headless.h"
+#include "render/renderer.h"
 #include "render/scene_upload.h"
+#include "scene/scene_loader.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -124,6 +127,41 @@ TEST(TexelReads, TriangleCornersBeyondTheTexelLimitFallBackWithANote) {
     GpuScene fits = uploadScene(context, packed);
     EXPECT_TRUE(fits.texelReads) << fits.storageReadsNote;
     destroyGpuScene(context, fits);
+    destroyContext(context);
+}
+
+// The kernel compiles beside the upload for texel reads; when the upload falls back to
+// storage reads, the renderer compiles it again for them, and renders what
+// --storage-reads renders.
+TEST(TexelReads, ARendererWhoseUploadFallsBackRendersAsStorageReads) {
+    Context context;
+    createInstance(context, {}, true);
+    createDevice(context, "");
+    const Scene scene = parseScene(mixedScene(), "mixed.scene");
+    const std::uint32_t messagesBefore = validationMessageCount();
+    auto render = [&](bool storageReads, bool expectTexelReads) {
+        RenderSettings settings;
+        settings.width = 48;
+        settings.height = 36;
+        settings.storageReads = storageReads;
+        Renderer renderer;
+        HeadlessTarget target;
+        createRenderer(renderer, context, scene, settings);
+        EXPECT_EQ(renderer.specialization.texelReads != VK_FALSE, expectTexelReads);
+        createHeadlessTarget(target, context, renderer);
+        renderHeadlessFrame(target, context, renderer);
+        const Image8 image = readHeadlessImage(target, renderer);
+        destroyHeadlessTarget(target, context);
+        destroyRenderer(renderer, context);
+        return image.rgba;
+    };
+    const std::vector<std::uint8_t> texels = render(false, true);
+    const std::vector<std::uint8_t> storage = render(true, false);
+    context.properties.limits.maxTexelBufferElements = 10; // the 18 triangle corners exceed it
+    const std::vector<std::uint8_t> fallenBack = render(false, false);
+    EXPECT_EQ(fallenBack, storage);
+    EXPECT_EQ(texels, storage);
+    EXPECT_EQ(validationMessageCount(), messagesBefore);
     destroyContext(context);
 }
 
