@@ -117,32 +117,51 @@ Mesh modelMesh(const SourceModel& model, const std::vector<glm::dvec3>& position
     mesh.triangles.reserve(kept);
     const bool texcoords = !model.texcoords.empty();
     VertexChains vertexOf(positions.size(), texcoords, mesh.normals);
-    std::vector<CornerKey> blockKeys(3 * kKeyBlock);
-    for (std::size_t first = 0; first < triangles; first += kKeyBlock) {
-        const std::size_t count = std::min(kKeyBlock, triangles - first);
-        const std::vector<IndexRange> ranges = splitRange(count, 2048);
-        parallelFor(ranges.size(), [&](std::size_t k) {
-            for (std::size_t i = ranges[k].begin; i < ranges[k].end; ++i) {
-                if (fates[first + i] != TriangleFate::kept) continue;
-                const std::uint32_t face = model.triangles.face(first + i);
-                for (int c = 0; c < 3; ++c) {
-                    const SourceCorner corner = model.triangles.corner(first + i, c);
-                    CornerKey& key = blockKeys[3 * i + c];
-                    key.position = corner.position;
-                    key.texcoord = corner.texcoord;
-                    key.normal = corner.normal != kNoNormal ? normals[corner.normal]
-                                                            : smooth->at(face, corner.position);
-                }
+    // A block's corners keyed on all threads, then looked up in order on one, while the
+    // others key the next block: the look-ups are the first part of each round, and the
+    // thread that takes them joins the keying when done.
+    std::vector<CornerKey> blockKeys[2];
+    auto keyRange = [&](std::vector<CornerKey>& keys, std::size_t first, IndexRange range) {
+        for (std::size_t i = range.begin; i < range.end; ++i) {
+            if (fates[first + i] != TriangleFate::kept) continue;
+            const std::uint32_t face = model.triangles.face(first + i);
+            for (int c = 0; c < 3; ++c) {
+                const SourceCorner corner = model.triangles.corner(first + i, c);
+                CornerKey& key = keys[3 * i + c];
+                key.position = corner.position;
+                key.texcoord = corner.texcoord;
+                key.normal = corner.normal != kNoNormal ? normals[corner.normal]
+                                                        : smooth->at(face, corner.position);
             }
-        });
+        }
+    };
+    auto lookUp = [&](const std::vector<CornerKey>& keys, std::size_t first) {
+        const std::size_t count = std::min(kKeyBlock, triangles - first);
         for (std::size_t i = 0; i < count; ++i) {
             if (fates[first + i] != TriangleFate::kept) continue;
             glm::uvec3 triangle;
             for (int c = 0; c < 3; ++c) // in corner order: vertices are numbered as they come
-                triangle[c] = vertexOf.indexOf(blockKeys[3 * i + c]);
+                triangle[c] = vertexOf.indexOf(keys[3 * i + c]);
             mesh.triangles.push_back(triangle);
         }
         if (progress) progress->advance(count);
+    };
+    // Round r looks up block r - 1 and keys block r.
+    for (std::size_t round = 0; round * kKeyBlock < triangles + kKeyBlock; ++round) {
+        const std::size_t keyed = round * kKeyBlock;
+        std::vector<IndexRange> ranges;
+        if (keyed < triangles) {
+            ranges = splitRange(std::min(kKeyBlock, triangles - keyed), 2048);
+            blockKeys[round % 2].resize(3 * kKeyBlock);
+        }
+        const bool lookUps = round > 0;
+        parallelFor(ranges.size() + 1, [&](std::size_t k) {
+            if (k == 0) {
+                if (lookUps) lookUp(blockKeys[(round + 1) % 2], keyed - kKeyBlock);
+                return;
+            }
+            keyRange(blockKeys[round % 2], keyed, ranges[k - 1]);
+        });
     }
     // The smooth normals go before the other arrays are made: the phase's peak of memory is
     // where the corners have their normals. The kept triangles' materials and lines are
