@@ -1,6 +1,7 @@
 #include "packing/flat_patches.h"
 
 #include "base/parallel.h"
+#include "base/populated_memory.h"
 
 #include <algorithm>
 #include <array>
@@ -46,7 +47,8 @@ struct Patches {
 template <typename CornerAt>
 std::vector<std::uint32_t> patchesOf(const std::vector<glm::dvec3>& positions,
                                      std::size_t triangleCount, const CornerAt& cornerAt) {
-    std::vector<Plane> planes(triangleCount);
+    std::vector<Plane> planes;
+    resizePopulated(planes, triangleCount);
     const std::vector<IndexRange> triangleRanges = splitRange(triangleCount, 16384);
     parallelFor(triangleRanges.size(), [&](std::size_t r) {
         for (std::size_t t = triangleRanges[r].begin; t < triangleRanges[r].end; ++t)
@@ -76,7 +78,8 @@ std::vector<std::uint32_t> patchesOf(const std::vector<glm::dvec3>& positions,
         for (int k = 0; k < 3; ++k)
             ++firstAt[cornerAt(t, k) + 1];
     std::partial_sum(firstAt.begin(), firstAt.end(), firstAt.begin());
-    std::vector<std::uint32_t> trianglesAt(3 * triangleCount);
+    std::vector<std::uint32_t> trianglesAt;
+    resizePopulated(trianglesAt, 3 * triangleCount);
     std::vector<std::uint32_t> filled(firstAt.begin(), firstAt.end() - 1);
     for (std::size_t t = 0; t < triangleCount; ++t)
         for (int k = 0; k < 3; ++k)
