@@ -98,3 +98,9 @@ std::vector<IndexRange> splitRange(std::size_t count, std::size_t grain) {
         split[k] = {count * k / ranges, count * (k + 1) / ranges};
     return split;
 }
+
+void parallelForRanges(std::size_t count, std::size_t grain,
+                       const std::function<void(IndexRange)>& body) {
+    const std::vector<IndexRange> ranges = splitRange(count, grain);
+    parallelFor(ranges.size(), [&](std::size_t k) { body(ranges[k]); });
+}

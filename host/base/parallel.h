@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <type_traits>
 #include <vector>
 
 // The threads host work may use: setWorkerThreads's count, else one per hardware thread.
@@ -40,3 +41,24 @@ struct IndexRange {
     std::size_t begin = 0, end = 0;
 };
 std::vector<IndexRange> splitRange(std::size_t count, std::size_t grain);
+
+// body(range) for each range of splitRange(count, grain), on all threads: a loop over a
+// large array whose iterations write their own elements.
+void parallelForRanges(std::size_t count, std::size_t grain,
+                       const std::function<void(IndexRange)>& body);
+
+// pass(range) for each range of splitRange(count, grain) on all threads, the results then
+// merged in range order, merge(part, into) adding each to the first range's. The ranges
+// depend on the thread count: the result does not when merging is exact in any grouping
+// (a minimum, a maximum, a count; the first index of a maximum when merge keeps the earlier).
+template <typename Pass, typename Merge>
+auto reduceRanges(std::size_t count, std::size_t grain, const Pass& pass, const Merge& merge) {
+    using Result = std::invoke_result_t<Pass, IndexRange>;
+    const std::vector<IndexRange> ranges = splitRange(count, grain);
+    std::vector<Result> parts(ranges.size());
+    parallelFor(ranges.size(), [&](std::size_t k) { parts[k] = pass(ranges[k]); });
+    Result total = std::move(parts.front());
+    for (std::size_t k = 1; k < parts.size(); ++k)
+        merge(parts[k], total);
+    return total;
+}

@@ -85,6 +85,20 @@ class Candidates {
 
     std::size_t size() const { return cores_.size(); }
 
+    // count candidates more, each then set once (set) on any thread; the first's index.
+    std::size_t grow(std::size_t count) {
+        const std::size_t first = cores_.size();
+        cores_.resize(first + count);
+        if (textured_) texcoords_.resize(first + count);
+        if (fp64_) exactPositions_.resize(first + count);
+        return first;
+    }
+    void set(std::size_t c, const PackedVertex& vertex) {
+        cores_[c] = {glm::vec3(vertex.position), glm::vec3(vertex.normal), vertex.material};
+        if (textured_) texcoords_[c] = vertex.texcoord;
+        if (fp64_) exactPositions_[c] = glm::dvec3(vertex.exactPosition);
+    }
+
     PackedVertex operator[](std::size_t c) const {
         PackedVertex vertex{};
         vertex.position = glm::vec4(cores_[c].position, 0.0f);
@@ -126,6 +140,24 @@ class Candidates {
     std::vector<glm::vec2> texcoords_;
     std::vector<glm::dvec3> exactPositions_;
 };
+
+// Whether the mesh's triangles all have one material, its vertices no colours, and its
+// vertices are numbered in the order its corners first use them (as a model's are,
+// model/model_mesh.h): then each vertex packs as one candidate, in vertex order.
+bool hasOneMaterialInFirstUseOrder(const Mesh& mesh) {
+    if (!mesh.colors.empty() || mesh.triangles.empty()) return false;
+    const std::uint32_t material = mesh.triangleMaterials.front();
+    if (std::any_of(mesh.triangleMaterials.begin(), mesh.triangleMaterials.end(),
+                    [&](std::uint32_t m) { return m != material; }))
+        return false;
+    std::uint32_t used = 0; // the vertices used so far: 0 to used - 1
+    for (const glm::uvec3& triangle : mesh.triangles)
+        for (int k = 0; k < 3; ++k) {
+            if (triangle[k] > used) return false;
+            used += triangle[k] == used;
+        }
+    return used == mesh.positions.size();
+}
 
 // Each texture's place in the texel array (GpuMaterialTexture), by Scene::textures' index;
 // the texels themselves go into pixels.
@@ -210,14 +242,19 @@ PackingInputPtr readForPacking(const Scene& scene, Precision precision) {
 
     const std::size_t triangles = triangleCount(scene);
     cornersOfTriangles.reserve(3 * triangles);
+    auto packedVertex = [&](const glm::dvec3& position, const glm::dvec3& normal,
+                            std::uint32_t material, glm::dvec2 texcoord) {
+        PackedVertex vertex{};
+        vertex.position = toVec4(position);
+        vertex.normal = toVec4(normal);
+        vertex.material = material;
+        if (textured) vertex.texcoord = glm::vec2(texcoord);
+        if (fp64) vertex.exactPosition = glm::dvec4(position, 0.0);
+        return vertex;
+    };
     auto candidate = [&](const Vertex& vertex, std::int64_t texture, glm::dvec2 texcoord) {
-        PackedVertex packedVertex{};
-        packedVertex.position = toVec4(vertex.position);
-        packedVertex.normal = toVec4(vertex.normal);
-        packedVertex.material = materialIndex(vertex.material, texture);
-        if (textured) packedVertex.texcoord = glm::vec2(texcoord);
-        if (fp64) packedVertex.exactPosition = glm::dvec4(vertex.position, 0.0);
-        return candidates.add(packedVertex);
+        return candidates.add(packedVertex(vertex.position, vertex.normal,
+                                           materialIndex(vertex.material, texture), texcoord));
     };
     for (const Triangle& triangle : scene.triangles)
         for (int k = 0; k < 3; ++k)
@@ -232,6 +269,30 @@ PackingInputPtr readForPacking(const Scene& scene, Precision precision) {
     PhaseProgress progress("Packing the scene", triangles);
     progress.advance(scene.triangles.size());
     for (const Mesh& mesh : scene.meshes) {
+        // A model's mesh of one material, its vertices numbered as its corners first use
+        // them: vertex v's candidate is the v-th, made on all threads.
+        if (hasOneMaterialInFirstUseOrder(mesh)) {
+            const auto texture = triangleTexture(mesh, 0);
+            const std::uint32_t material =
+                materialIndex(cornerMaterial(mesh, 0, 0), texture ? std::int64_t(*texture) : -1);
+            const std::size_t first = candidates.grow(mesh.positions.size());
+            parallelForRanges(mesh.positions.size(), 1 << 14, [&](IndexRange range) {
+                for (std::size_t v = range.begin; v < range.end; ++v)
+                    candidates.set(first + v,
+                                   packedVertex(mesh.positions[v], mesh.normals[v], material,
+                                                vertexTexcoord(mesh, std::uint32_t(v))));
+            });
+            const std::size_t corners = cornersOfTriangles.size();
+            cornersOfTriangles.resize(corners + 3 * mesh.triangles.size());
+            parallelForRanges(mesh.triangles.size(), 1 << 14, [&](IndexRange range) {
+                for (std::size_t t = range.begin; t < range.end; ++t)
+                    for (int k = 0; k < 3; ++k)
+                        cornersOfTriangles[corners + 3 * t + std::size_t(k)] =
+                            std::uint32_t(first + mesh.triangles[t][k]);
+            });
+            progress.advance(mesh.triangles.size());
+            continue;
+        }
         packedCorners.assign(mesh.positions.size(), PackedCorner{});
         for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
             if (t % 65536 == 65535) progress.advance(65536);

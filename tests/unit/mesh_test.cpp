@@ -59,6 +59,28 @@ const std::string kCube = "mtllib cube.mtl\n"
 const std::string kCubeMtl = "newmtl red\nKd 0.8 0.1 0.1\n"
                              "newmtl shiny\nKd 0.2 0.2 0.2\nKs 0.5 0.5 0.5\nNs 50\n";
 
+// The same cube in one material, no vertex coloured: its vertices, numbered as its corners
+// first use them, pack in vertex order on all threads (scene_packing.cpp).
+const std::string kPlainCube = "mtllib cube.mtl\n"
+                               "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                               "v 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                               "usemtl shiny\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\n"
+                               "f 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+
+// The scene packs to the same arrays as its triangles written per vertex, in fp32 and fp64,
+// with and without the hierarchy.
+void expectSamePackingAsPerVertex(const Scene& scene) {
+    const Scene perVertex = perVertexCopy(scene);
+    ASSERT_EQ(perVertex.triangles.size(), triangleCount(scene));
+    for (const Precision precision : {Precision::Fp32, Precision::Fp64}) {
+        for (const Acceleration acceleration : {Acceleration::Bvh, Acceleration::None}) {
+            SCOPED_TRACE(precision == Precision::Fp32 ? "fp32" : "fp64");
+            expectSamePacking(packScene(scene, acceleration, precision),
+                              packScene(perVertex, acceleration, precision));
+        }
+    }
+}
+
 } // namespace
 
 TEST(Mesh, AModelsCornersShareVerticesAndItsFloorIsAMeshOfItsOwn) {
@@ -130,6 +152,12 @@ TEST(Mesh, TheMaterialTableHoldsTheDiffuseTextureNamedByTheMtl) {
     EXPECT_EQ(materials[2].phong.diffuse, defaultModelMaterial().phong.diffuse);
 }
 
+TEST(Mesh, AMeshOfOneMaterialPacksAsItsTrianglesPerVertex) {
+    Scene cube = modelScene(kPlainCube, kCubeMtl);
+    cube.spheres.push_back(Sphere{{0, 3, -6}, 0.5, {}, 9});
+    expectSamePackingAsPerVertex(cube);
+}
+
 TEST(Mesh, PackingAMeshEqualsPackingItsTrianglesPerVertex) {
     Scene cube = modelScene(kCube, kCubeMtl);
     // A scene file's own triangle and sphere beside the meshes: numbered first.
@@ -141,13 +169,5 @@ TEST(Mesh, PackingAMeshEqualsPackingItsTrianglesPerVertex) {
     own.line = 4;
     cube.triangles.push_back(own);
     cube.spheres.push_back(Sphere{{0, 3, -6}, 0.5, {}, 9});
-    const Scene perVertex = perVertexCopy(cube);
-    ASSERT_EQ(perVertex.triangles.size(), triangleCount(cube));
-    for (const Precision precision : {Precision::Fp32, Precision::Fp64}) {
-        for (const Acceleration acceleration : {Acceleration::Bvh, Acceleration::None}) {
-            SCOPED_TRACE(precision == Precision::Fp32 ? "fp32" : "fp64");
-            expectSamePacking(packScene(cube, acceleration, precision),
-                              packScene(perVertex, acceleration, precision));
-        }
-    }
+    expectSamePackingAsPerVertex(cube);
 }
