@@ -1,5 +1,5 @@
-// An OBJ file in four steps (obj_reader.h), the first and the third on all threads, one
-// chunk of the text each (objChunkStarts):
+// An OBJ file in four steps (obj_reader.h), the first and the third on all threads, a few
+// chunks of the text each (objChunkStarts):
 //   1. each chunk's survey: is it text, how many of each thing it makes, its mtllib and usemtl;
 //   2. the model's arrays sized to the sums, and the material statements replayed in file
 //      order: the libraries read, each usemtl's material known, their warnings said;
@@ -135,7 +135,7 @@ SourceModel parseObj(std::string_view text, const std::string& fileName, const M
     const std::size_t bom = text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0; // UTF-8 byte-order mark
     text.remove_prefix(bom);
     const std::vector<std::size_t> starts =
-        objChunkStarts(text, options.threads, options.minChunkBytes);
+        objChunkStarts(text, options.chunks, options.minChunkBytes);
     const std::size_t chunks = starts.size();
     auto chunkText = [&](std::size_t k) {
         return text.substr(starts[k], (k + 1 < chunks ? starts[k + 1] : text.size()) - starts[k]);

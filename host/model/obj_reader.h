@@ -17,13 +17,13 @@
 #include <string>
 #include <string_view>
 
-// How the text is shared among threads: as many chunks as threads (0: workerThreads(),
-// base/parallel.h), none shorter than minChunkBytes. The model, its warnings and its errors
-// are the same whatever the split.
+// How the text is shared among threads: in up to `chunks` chunks (0: kObjChunksPerThread a
+// thread of workerThreads(), obj_survey.h), none shorter than minChunkBytes. The model, its
+// warnings and its errors are the same whatever the split.
 // With a capacity, a file of more triangles than the device holds is refused once the survey
 // has counted them, before the text is read.
 struct ObjParseOptions {
-    unsigned threads = 0;
+    unsigned chunks = 0;
     std::size_t minChunkBytes = 1u << 20;
     const SceneCapacity* capacity = nullptr;
 };

@@ -57,9 +57,10 @@ std::optional<ObjKeyword> leadingKeyword(std::string_view line) {
     return std::nullopt;
 }
 
-std::vector<std::size_t> objChunkStarts(std::string_view text, unsigned threads,
+std::vector<std::size_t> objChunkStarts(std::string_view text, unsigned most,
                                         std::size_t minChunkBytes) {
-    const std::size_t chunks = chunkCount(text.size(), threads, minChunkBytes);
+    if (most == 0) most = kObjChunksPerThread * workerThreads();
+    const std::size_t chunks = chunkCount(text.size(), most, minChunkBytes);
     std::vector<std::size_t> starts{0};
     for (std::size_t k = 1; k < chunks; ++k) {
         std::size_t from = std::max(text.size() * k / chunks, starts.back());

@@ -38,10 +38,14 @@ struct ObjChunkSurvey {
     std::vector<ObjEvent> events; // an ignored keyword only where the chunk first has it
 };
 
-// Where each of up to `threads` chunks of text starts (0: workerThreads(), base/parallel.h):
-// 0, then at each further equal share the start of the next line that begins a statement
-// (the line before it does not end in a backslash). No chunk is shorter than minChunkBytes.
-std::vector<std::size_t> objChunkStarts(std::string_view text, unsigned threads,
+// Where each of up to `most` chunks of text starts (0: kObjChunksPerThread a thread of
+// workerThreads(), base/parallel.h): 0, then at each further equal share the start of the
+// next line that begins a statement (the line before it does not end in a backslash). No
+// chunk is shorter than minChunkBytes. Several chunks a thread, handed out in turn, keep the
+// threads busy to the end where one part of a file is slower to read than another (faces
+// than positions).
+constexpr unsigned kObjChunksPerThread = 8;
+std::vector<std::size_t> objChunkStarts(std::string_view text, unsigned most,
                                         std::size_t minChunkBytes);
 
 // progress (none: nullptr) is advanced by the chunk's bytes as they are read.
