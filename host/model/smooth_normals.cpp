@@ -1,5 +1,6 @@
 #include "model/smooth_normals.h"
 
+#include "base/keyed_lists.h"
 #include "base/parallel.h"
 #include "base/populated_memory.h"
 #include "model/exact_vectors.h"
@@ -13,7 +14,6 @@ namespace {
 using namespace exact_vectors;
 
 constexpr double kPi = 3.141592653589793;
-constexpr std::size_t kNoFace = SIZE_MAX;
 
 // The crease test compares the faces' unit normals in double, as the rule says, but first
 // their float roundings: each component within 2^-24 of its own, so the two dot products
@@ -44,12 +44,37 @@ glm::dvec3 newellNormal(const std::vector<glm::dvec3>& positions,
 // other model the scaled arithmetic rounds exactly as the unscaled one, so its normals are
 // the same bits.
 double newellScale(const std::vector<glm::dvec3>& positions) {
-    double largest = 0.0;
-    for (const glm::dvec3& p : positions)
-        largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    const double largest = reduceRanges(
+        positions.size(), 1 << 15,
+        [&](IndexRange range) {
+            double part = 0.0;
+            for (std::size_t i = range.begin; i < range.end; ++i) {
+                const glm::dvec3& p = positions[i];
+                part = std::max({part, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+            }
+            return part;
+        },
+        [](double part, double& into) { into = std::max(into, part); });
     int exponent = 0;
     std::frexp(largest, &exponent);
     return std::ldexp(1.0, -exponent);
+}
+
+// visit(p) for each position of the face once, however often the face names it: by a look
+// back over a small face, by sorting a copy of a large one.
+template <typename Visit>
+void visitEachOnce(std::span<const std::uint32_t> face, const Visit& visit) {
+    constexpr std::size_t kLookBack = 16;
+    if (face.size() <= kLookBack) {
+        for (std::size_t i = 0; i < face.size(); ++i)
+            if (std::find(face.begin(), face.begin() + i, face[i]) == face.begin() + i)
+                visit(face[i]);
+        return;
+    }
+    std::vector<std::uint32_t> sorted(face.begin(), face.end());
+    std::sort(sorted.begin(), sorted.end());
+    for (std::size_t i = 0; i < sorted.size(); ++i)
+        if (i == 0 || sorted[i] != sorted[i - 1]) visit(sorted[i]);
 }
 
 } // namespace
@@ -70,32 +95,18 @@ SmoothNormals::SmoothNormals(const SourceModel& model, const std::vector<glm::dv
             unit_[f] = glm::vec3(normalizedOrZero(newell_[f]));
         }
     });
-    // The faces around each position in one array, each face once though its position
-    // repeats: counted, then placed.
-    resizePopulated(start_, positions.size() + 1);
-    auto eachCorner = [&](auto visit) {
-        for (std::size_t f = 0; f < faces; ++f)
-            if (leftOut.empty() || !leftOut[f])
-                for (const std::uint32_t p : facePositions(model, f))
-                    visit(static_cast<std::uint32_t>(f), p);
-    };
-    std::vector<std::size_t> next(positions.size(), kNoFace); // the last face counted
-    eachCorner([&](std::uint32_t f, std::uint32_t p) {
-        if (next[p] != f) next[p] = f, ++start_[p + 1];
-    });
-    for (std::size_t p = 0; p < positions.size(); ++p)
-        start_[p + 1] += start_[p];
-    resizePopulated(faces_, start_.back());
-    std::copy(start_.begin(), start_.end() - 1, next.begin()); // where p's next face goes
-    eachCorner([&](std::uint32_t f, std::uint32_t p) {
-        if (next[p] == start_[p] || faces_[next[p] - 1] != f) faces_[next[p]++] = f;
-    });
+    // The faces around each position, each face once though its position repeats in it.
+    facesAt_ = keyedLists(positions.size(), faces, model.facePositions.size(),
+                          [&](std::size_t f, const auto& visit) {
+                              if (leftOut.empty() || !leftOut[f])
+                                  visitEachOnce(facePositions(model, f), visit);
+                          });
 }
 
 glm::dvec3 SmoothNormals::at(std::uint32_t face, std::uint32_t position) const {
     glm::dvec3 sum(0.0);
-    for (std::size_t i = start_[position]; i < start_[position + 1]; ++i) {
-        const std::uint32_t other = faces_[i];
+    for (std::uint32_t i = facesAt_.start[position]; i < facesAt_.start[position + 1]; ++i) {
+        const std::uint32_t other = facesAt_.items[i];
         if (everywhere_ || other == face || withinCrease(face, other)) sum += newell_[other];
     }
     return normalizedOrZero(sum);

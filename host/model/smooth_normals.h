@@ -4,6 +4,7 @@
 // always included. The same arithmetic as tools/obj_to_scene.py's, operation for operation.
 #pragma once
 
+#include "base/keyed_lists.h"
 #include "model/source_model.h"
 
 #include <glm/glm.hpp>
@@ -31,7 +32,6 @@ class SmoothNormals {
     // Per face, its unit normal rounded to float, for the crease test (smooth_normals.cpp):
     // 12 bytes a face rather than 24.
     std::vector<glm::vec3> unit_;
-    // The faces around position p: faces_[start_[p]] up to faces_[start_[p + 1]].
-    std::vector<std::size_t> start_;
-    std::vector<std::uint32_t> faces_;
+    // The faces around each position, in file order.
+    KeyedLists facesAt_;
 };

@@ -1,5 +1,6 @@
 #include "packing/flat_patches.h"
 
+#include "base/keyed_lists.h"
 #include "base/parallel.h"
 #include "base/populated_memory.h"
 
@@ -72,18 +73,12 @@ std::vector<std::uint32_t> patchesOf(const std::vector<glm::dvec3>& positions,
                liesIn(u, t);
     };
 
-    // The triangles at each vertex (counting sort by vertex index).
-    std::vector<std::uint32_t> firstAt(positions.size() + 1, 0);
-    for (std::size_t t = 0; t < triangleCount; ++t)
-        for (int k = 0; k < 3; ++k)
-            ++firstAt[cornerAt(t, k) + 1];
-    std::partial_sum(firstAt.begin(), firstAt.end(), firstAt.begin());
-    std::vector<std::uint32_t> trianglesAt;
-    resizePopulated(trianglesAt, 3 * triangleCount);
-    std::vector<std::uint32_t> filled(firstAt.begin(), firstAt.end() - 1);
-    for (std::size_t t = 0; t < triangleCount; ++t)
-        for (int k = 0; k < 3; ++k)
-            trianglesAt[filled[cornerAt(t, k)]++] = std::uint32_t(t);
+    // The triangles at each vertex.
+    const KeyedLists trianglesAt = keyedLists(positions.size(), triangleCount, 3 * triangleCount,
+                                              [&](std::size_t t, const auto& visit) {
+                                                  for (int k = 0; k < 3; ++k)
+                                                      visit(cornerAt(t, k));
+                                              });
 
     // The joins at a vertex follow from the planes alone, not from the joins before them,
     // so the vertices are visited on all threads, a batch of ranges at a time, and their
@@ -103,8 +98,8 @@ std::vector<std::uint32_t> patchesOf(const std::vector<glm::dvec3>& positions,
                  ++v) {
                 std::uint32_t representatives[kPlanesPerVertex];
                 int planeCount = 0;
-                for (std::uint32_t at = firstAt[v]; at < firstAt[v + 1]; ++at) {
-                    const std::uint32_t t = trianglesAt[at];
+                for (std::uint32_t at = trianglesAt.start[v]; at < trianglesAt.start[v + 1]; ++at) {
+                    const std::uint32_t t = trianglesAt.items[at];
                     if (planes[t].tolerance == 0.0) continue;
                     int k = 0;
                     while (k < planeCount && !flat(t, representatives[k]))

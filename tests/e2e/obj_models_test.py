@@ -146,6 +146,11 @@ def ring(bend=0.0, k=32):
 
 MODELS["ring"] = (ring(), None)
 MODELS["bent_ring"] = (ring(bend=0.2), None)
+# Faces that name a position twice, beside faces in other planes: the ring's 66 corners, and a
+# pentagon's five, each count once in the smooth normals there.
+MODELS["named_twice"] = (ring() + "v 1.3 0 0.2\nv 1.3 0.4 0.15\nf 1 65 66\n"
+                         "v 3 0 0\nv 4 0 0\nv 4 1 0\nv 3 1 0.2\nv 3.5 -0.6 0.3\n"
+                         "f 67 68 69 67 70\nf 67 71 68\n", None)
 
 # Raytracer's options for a model, and the tool's that build the same scene.
 VARIANTS = [
