@@ -2,6 +2,8 @@
 // that both place a model at the same bits.
 #include "model/model_fit.h"
 
+#include "base/parallel.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,17 +11,27 @@
 
 namespace {
 
+// Positions a thread takes at a time in the passes over all of them.
+constexpr std::size_t kGrain = 1 << 15;
+
 // The distance straight ahead of the default camera at which the outermost of the turned
 // positions lies `share` of the way from the centre of the view to its edge:
 // y / (distance - z) = share * tanY, and x the same with tanX.
 double distanceForShare(const std::vector<glm::dvec3>& turned, double tanY, double tanX,
                         double share) {
     const double vertical = share * tanY, horizontal = share * tanX;
-    double distance = 0.0;
-    for (const glm::dvec3& v : turned)
-        distance = std::max(distance,
-                            v.z + std::max(std::abs(v.y) / vertical, std::abs(v.x) / horizontal));
-    return distance;
+    return reduceRanges(
+        turned.size(), kGrain,
+        [&](IndexRange range) {
+            double distance = 0.0;
+            for (std::size_t i = range.begin; i < range.end; ++i) {
+                const glm::dvec3& v = turned[i];
+                distance = std::max(
+                    distance, v.z + std::max(std::abs(v.y) / vertical, std::abs(v.x) / horizontal));
+            }
+            return distance;
+        },
+        [](double part, double& into) { into = std::max(into, part); });
 }
 
 // Half the larger of the silhouette's width and height as shares of the frame's, the model's
@@ -47,13 +59,28 @@ double halfSpan(const std::vector<glm::dvec3>& turned, double tanY, double tanX,
 // stays too: it is the first to be behind the eye.
 std::vector<glm::dvec3> silhouetteCandidates(const std::vector<glm::dvec3>& turned) {
     constexpr int kSlices = 4096;
-    double low = std::numeric_limits<double>::infinity(), high = -low;
-    std::size_t nearest = 0;
-    for (std::size_t i = 0; i < turned.size(); ++i) {
-        low = std::min(low, turned[i].z);
-        if (turned[i].z > high || i == 0) high = turned[i].z, nearest = i;
-    }
-    const double width = high - low, scale = width > 0.0 ? kSlices / width : 0.0;
+    // The depth's range, and the nearest position: the first of the largest z.
+    struct Depths {
+        double low = std::numeric_limits<double>::infinity(), high = -low;
+        std::size_t nearest = 0;
+    };
+    const Depths depths = reduceRanges(
+        turned.size(), kGrain,
+        [&](IndexRange range) {
+            Depths part;
+            for (std::size_t i = range.begin; i < range.end; ++i) {
+                part.low = std::min(part.low, turned[i].z);
+                if (turned[i].z > part.high || i == range.begin)
+                    part.high = turned[i].z, part.nearest = i;
+            }
+            return part;
+        },
+        [](const Depths& part, Depths& into) {
+            into.low = std::min(into.low, part.low);
+            if (part.high > into.high) into.high = part.high, into.nearest = part.nearest;
+        });
+    const double low = depths.low, width = depths.high - low;
+    const double scale = width > 0.0 ? kSlices / width : 0.0;
     auto sliceOf = [&](const glm::dvec3& v) { // monotone in z
         const double slice = (v.z - low) * (std::isfinite(scale) ? scale : 0.0);
         return slice < kSlices - 1 ? static_cast<int>(slice) : kSlices - 1;
@@ -64,13 +91,24 @@ std::vector<glm::dvec3> silhouetteCandidates(const std::vector<glm::dvec3>& turn
                                      std::max(-v.y, 0.0)};
     };
     // The farthest reach in each slice, then in the slices above each.
-    std::vector<std::array<double, 4>> above(kSlices + 1, {0.0, 0.0, 0.0, 0.0});
-    for (const glm::dvec3& v : turned) {
-        const std::array<double, 4> r = reach(v);
-        std::array<double, 4>& slice = above[sliceOf(v)];
-        for (int side = 0; side < 4; ++side)
-            slice[side] = std::max(slice[side], r[side]);
-    }
+    using Reaches = std::vector<std::array<double, 4>>;
+    Reaches above = reduceRanges(
+        turned.size(), kGrain,
+        [&](IndexRange range) {
+            Reaches slices(kSlices + 1, {0.0, 0.0, 0.0, 0.0});
+            for (std::size_t i = range.begin; i < range.end; ++i) {
+                const std::array<double, 4> r = reach(turned[i]);
+                std::array<double, 4>& slice = slices[sliceOf(turned[i])];
+                for (int side = 0; side < 4; ++side)
+                    slice[side] = std::max(slice[side], r[side]);
+            }
+            return slices;
+        },
+        [](const Reaches& part, Reaches& into) {
+            for (std::size_t slice = 0; slice < into.size(); ++slice)
+                for (int side = 0; side < 4; ++side)
+                    into[slice][side] = std::max(into[slice][side], part[slice][side]);
+        });
     std::array<double, 4> beyond{-1.0, -1.0, -1.0, -1.0}; // nothing above the last slice
     for (int slice = kSlices; slice-- > 0;) {
         const std::array<double, 4> own = above[slice];
@@ -78,16 +116,26 @@ std::vector<glm::dvec3> silhouetteCandidates(const std::vector<glm::dvec3>& turn
         for (int side = 0; side < 4; ++side)
             beyond[side] = std::max(beyond[side], own[side]);
     }
-    std::vector<glm::dvec3> candidates{turned[nearest]};
-    for (const glm::dvec3& v : turned) {
-        const std::array<double, 4> r = reach(v);
-        const std::array<double, 4>& higher = above[sliceOf(v)];
-        for (int side = 0; side < 4; ++side)
-            if (r[side] > 0.0 && r[side] > higher[side]) {
-                candidates.push_back(v);
-                break;
+    std::vector<glm::dvec3> candidates{turned[depths.nearest]};
+    const std::vector<glm::dvec3> reaching = reduceRanges(
+        turned.size(), kGrain,
+        [&](IndexRange range) {
+            std::vector<glm::dvec3> part;
+            for (std::size_t i = range.begin; i < range.end; ++i) {
+                const std::array<double, 4> r = reach(turned[i]);
+                const std::array<double, 4>& higher = above[sliceOf(turned[i])];
+                for (int side = 0; side < 4; ++side)
+                    if (r[side] > 0.0 && r[side] > higher[side]) {
+                        part.push_back(turned[i]);
+                        break;
+                    }
             }
-    }
+            return part;
+        },
+        [](const std::vector<glm::dvec3>& part, std::vector<glm::dvec3>& into) {
+            into.insert(into.end(), part.begin(), part.end());
+        });
+    candidates.insert(candidates.end(), reaching.begin(), reaching.end());
     return candidates;
 }
 

@@ -5,6 +5,7 @@
 
 #include "base/parallel.h"
 #include "base/phase_progress.h"
+#include "base/populated_memory.h"
 #include "base/release.h"
 #include "model/exact_vectors.h"
 #include "model/far_vertices.h"
@@ -60,13 +61,24 @@ struct Placement {
     glm::dvec3 place(glm::dvec3 p) const { return turn.apply(p - centre) * scale + offset; }
 };
 
+// The box around the positions (at least one), on all threads: min and max are exact in
+// any order.
 std::pair<glm::dvec3, glm::dvec3> boxOf(const std::vector<glm::dvec3>& positions) {
-    glm::dvec3 low = positions[0], high = positions[0];
-    for (const glm::dvec3& p : positions) {
-        low = glm::min(low, p);
-        high = glm::max(high, p);
-    }
-    return {low, high};
+    using Box = std::pair<glm::dvec3, glm::dvec3>;
+    return reduceRanges(
+        positions.size(), 1 << 15,
+        [&](IndexRange range) {
+            Box box{positions[range.begin], positions[range.begin]};
+            for (std::size_t i = range.begin; i < range.end; ++i) {
+                box.first = glm::min(box.first, positions[i]);
+                box.second = glm::max(box.second, positions[i]);
+            }
+            return box;
+        },
+        [](const Box& part, Box& into) {
+            into.first = glm::min(into.first, part.first);
+            into.second = glm::max(into.second, part.second);
+        });
 }
 
 // Whether the model encloses its box's centre as a room does: a ray from the centre in each
@@ -139,11 +151,7 @@ Placement insidePlacement(const std::vector<glm::dvec3>& positions) {
 }
 
 Placement placementOf(const std::vector<glm::dvec3>& positions, const ModelSceneSetup& setup) {
-    glm::dvec3 low = positions[0], high = positions[0];
-    for (const glm::dvec3& p : positions) {
-        low = glm::min(low, p);
-        high = glm::max(high, p);
-    }
+    const auto [low, high] = boxOf(positions);
     Placement placement;
     placement.low = low;
     placement.high = high;
@@ -153,9 +161,11 @@ Placement placementOf(const std::vector<glm::dvec3>& positions, const ModelScene
         const double size = std::max({high.x - low.x, high.y - low.y, high.z - low.z});
         placement.scale = size > 0.0 ? kFitSize / size : 1.0;
         std::vector<glm::dvec3> turned;
-        turned.reserve(positions.size());
-        for (const glm::dvec3& p : positions)
-            turned.push_back(placement.turn.apply(p - placement.centre) * placement.scale);
+        resizePopulated(turned, positions.size());
+        parallelForRanges(positions.size(), 1 << 15, [&](IndexRange range) {
+            for (std::size_t i = range.begin; i < range.end; ++i)
+                turned[i] = placement.turn.apply(positions[i] - placement.centre) * placement.scale;
+        });
         const double tanY = std::tan(setup.fovDegrees * (kPi / 180.0) / 2.0);
         placement.offset = glm::dvec3(0.0, 0.0, -fitDistance(turned, tanY, tanY * setup.aspect));
     }
@@ -215,14 +225,29 @@ Mesh groundMesh(const Placement& placement) {
 ModelPlacement placementFacts(const SourceModel& model, const std::vector<bool>& far,
                               const Placement& placement, const Mesh& mesh, bool fitted) {
     ModelPlacement facts;
-    bool first = true; // the box of the positions that are not far, as read
-    for (std::size_t i = 0; i < model.positions.size(); ++i) {
-        if (far[i]) continue;
-        const glm::dvec3& p = model.positions[i];
-        facts.readLow = first ? p : glm::min(facts.readLow, p);
-        facts.readHigh = first ? p : glm::max(facts.readHigh, p);
-        first = false;
-    }
+    // The box of the positions that are not far, as read (none: empty).
+    struct ReadBox {
+        bool empty = true;
+        glm::dvec3 low{0.0}, high{0.0};
+        void grow(const glm::dvec3& lo, const glm::dvec3& hi) {
+            low = empty ? lo : glm::min(low, lo);
+            high = empty ? hi : glm::max(high, hi);
+            empty = false;
+        }
+    };
+    const ReadBox read = reduceRanges(
+        model.positions.size(), 1 << 15,
+        [&](IndexRange range) {
+            ReadBox box;
+            for (std::size_t i = range.begin; i < range.end; ++i)
+                if (!far[i]) box.grow(model.positions[i], model.positions[i]);
+            return box;
+        },
+        [](const ReadBox& part, ReadBox& into) {
+            if (!part.empty) into.grow(part.low, part.high);
+        });
+    facts.readLow = read.low;
+    facts.readHigh = read.high;
     std::tie(facts.placedLow, facts.placedHigh) = boxOf(mesh.positions);
     const CameraPose camera = modelCamera(placement);
     facts.centre = camera.target;
