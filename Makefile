@@ -51,15 +51,15 @@ check-hardening: deps
 # chart under $(BUILD_DIR)/bench/. BENCH_ARGS=--quick for a fast check. Then the kernel's
 # costs (bench-kernel, about 4 minutes on 2 cores).
 bench: bench-deps build
-	@VK_ICD_FILENAMES=$${VK_ICD_FILENAMES:-} tools/bench $(BUILD_DIR)/Raytracer $(BENCH_ARGS)
+	@tools/bench $(BUILD_DIR)/Raytracer $(BENCH_ARGS)
 	@echo
-	@VK_ICD_FILENAMES=$${VK_ICD_FILENAMES:-} tools/kernel_costs $(BUILD_DIR)/Raytracer $(KERNEL_BENCH_ARGS)
+	@tools/kernel_costs $(BUILD_DIR)/Raytracer $(KERNEL_BENCH_ARGS)
 
 # The robust methods against the naive ones, fp64, and the scene-specialised kernel against
 # the general one: a table of CPU time per frame, CSV in $(BUILD_DIR)/bench/kernel_costs.csv.
 # KERNEL_BENCH_ARGS="--rounds 12" for finer figures.
 bench-kernel: build
-	@VK_ICD_FILENAMES=$${VK_ICD_FILENAMES:-} tools/kernel_costs $(BUILD_DIR)/Raytracer $(KERNEL_BENCH_ARGS)
+	@tools/kernel_costs $(BUILD_DIR)/Raytracer $(KERNEL_BENCH_ARGS)
 
 # From file to first frame at scale: torus knots of 1M, 4M, 10M and 30M triangles as OBJ,
 # each with its start-up by phase, parse MB/s on 1 and all threads, peak memory, GPU bytes
@@ -67,7 +67,7 @@ bench-kernel: build
 # SCALE_ARGS="--sizes 1e6 4e6" on a smaller machine). Tables on stdout, CSV under
 # $(BUILD_DIR)/bench-scale/.
 bench-scale: bench-deps build
-	@VK_ICD_FILENAMES=$${VK_ICD_FILENAMES:-} tools/bench_scale $(BUILD_DIR)/Raytracer $(SCALE_ARGS)
+	@tools/bench_scale $(BUILD_DIR)/Raytracer $(SCALE_ARGS)
 
 bench-deps:
 	@tools/build/install_deps.sh --bench
