@@ -311,18 +311,15 @@ void createRendererFrom(Renderer& renderer, const Context& context, const Scene&
         }
     };
     // The kernel compiles on a second thread while the scene uploads (the two phases' times
-    // overlap), for the texel reads asked for.
-    parallelFor(
-        2,
-        [&](std::size_t part) {
-            if (part == 1) return loadKernel();
-            const PhaseTimer timer("upload");
-            // packed's arrays go as they are written: the GPU holds them now.
-            renderer.scene = uploadScene(context, std::move(packed),
-                                         {renderer.specialization.texelReads != VK_FALSE,
-                                          renderer.specialization.indexedTriangles != VK_FALSE});
-        },
-        2);
+    // overlap), for the texel reads asked for; one after the other with --threads 1.
+    parallelFor(2, [&](std::size_t part) {
+        if (part == 1) return loadKernel();
+        const PhaseTimer timer("upload");
+        // packed's arrays go as they are written: the GPU holds them now.
+        renderer.scene = uploadScene(context, std::move(packed),
+                                     {renderer.specialization.texelReads != VK_FALSE,
+                                      renderer.specialization.indexedTriangles != VK_FALSE});
+    });
     // The upload turns texel reads off for an array beyond maxTexelBufferElements: the
     // kernel is then compiled again, for storage-buffer reads.
     if (renderer.scene.texelReads != (renderer.specialization.texelReads != VK_FALSE)) {
