@@ -3,8 +3,9 @@
 // equal bins along the longest axis of their bounds, and the split between bins i and i+1
 // that minimises the surface-area cost
 //     Ct * A + A_left * N_left + A_right * N_right      (A: half the box surface area)
-// is taken, unless a leaf (cost N * A) is no dearer and small enough. Primitive ids are
-// partitioned in place in one array. An interior node is written depth first straight into
+// is taken, unless a leaf (cost N * A) is no dearer and small enough. The primitives' boxes
+// with their ids are partitioned in place in one array, so that a node's primitives lie
+// side by side in memory. An interior node is written depth first straight into
 // the output array when it is reached, and gets its children's references (box, node index
 // or leaf) once they are built, so the left child of a node, if interior, is the next node;
 // a leaf is only a reference in its parent (shared.h).
@@ -21,6 +22,8 @@
 // position in the array. The depth limit therefore holds for any input.
 #include "packing/bvh.h"
 
+#include "packing/bvh_boxes.h"
+
 #include "base/parallel.h"
 #include "base/phase_progress.h"
 #include "base/populated_memory.h"
@@ -30,6 +33,8 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
@@ -39,6 +44,12 @@
 namespace {
 
 constexpr int kBins = 16;
+using bvh_boxes::Bin;
+using bvh_boxes::Box;
+using bvh_boxes::Box4;
+using bvh_boxes::Float4;
+using bvh_boxes::kInfinity;
+using bvh_boxes::PrimitiveRef;
 // On several threads, ranges below a task size are built whole by one thread: about
 // kTasksPerThread tasks a thread, so that the last to finish leaves the others idle for
 // little of the build, and none below kSmallestTask, whose hand-out would cost more than
@@ -46,26 +57,6 @@ constexpr int kBins = 16;
 constexpr std::uint32_t kTasksPerThread = 16;
 constexpr std::uint32_t kSmallestTask = 16384;
 static_assert(kSmallestTask > BVH_MAX_LEAF_COUNT, "a range above the task size is never a leaf");
-
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
-
-struct Box {
-    glm::vec3 lo{kInfinity};
-    glm::vec3 hi{-kInfinity};
-    void grow(const Box& other) {
-        lo = glm::min(lo, other.lo);
-        hi = glm::max(hi, other.hi);
-    }
-    void grow(const glm::vec3& point) {
-        lo = glm::min(lo, point);
-        hi = glm::max(hi, point);
-    }
-    // Half the surface area; 0 for an empty box.
-    float halfArea() const {
-        glm::vec3 e = glm::max(hi - lo, glm::vec3(0.0f));
-        return e.x * e.y + e.y * e.z + e.z * e.x;
-    }
-};
 
 // Ranges at least this big are bounded and binned on all threads, in blocks whose results
 // are merged: boxes grow exactly and counts add up in any order, so the tree is the same.
@@ -78,11 +69,6 @@ struct Range {
     std::uint32_t size() const { return end - begin; }
 };
 
-// A bin of the SAH sweep: the boxes of its primitives and of their centroids, and their count.
-struct Bin {
-    Box bounds, centroids;
-    std::uint32_t count = 0;
-};
 using Bins = std::array<Bin, kBins>;
 
 void mergeBins(const Bins& from, Bins& into) {
@@ -159,20 +145,20 @@ auto reduceBlocks(std::uint32_t begin, std::uint32_t end, unsigned threads, cons
 class Builder {
   public:
     Builder(const PrimitiveBounds& input, const BvhSettings& settings)
-        : progress("Building the hierarchy", input.size()), boxes_(input.boxes.data()),
-          sphereCount_(input.sphereCount), settings_(settings),
-          threads_(settings.threads ? settings.threads : workerThreads()) {
-        resizePopulated(order, input.size());
-        resizePopulated(centroids_, input.size() * 3);
-        const std::vector<IndexRange> blocks = passBlocks(0, std::uint32_t(order.size()), threads_);
+        : progress("Building the hierarchy", input.size()), sphereCount_(input.sphereCount),
+          settings_(settings), threads_(settings.threads ? settings.threads : workerThreads()) {
+        resizePopulated(refs_, input.size());
+        const float* boxes = input.boxes.data();
+        const std::vector<IndexRange> blocks = passBlocks(0, std::uint32_t(refs_.size()), threads_);
         parallelFor(
             blocks.size(),
             [&](std::size_t b) {
                 for (std::size_t id = blocks[b].begin; id < blocks[b].end; ++id) {
-                    order[id] = std::uint32_t(id);
-                    for (std::size_t axis = 0; axis < 3; ++axis)
-                        centroids_[3 * id + axis] =
-                            0.5f * (boxes_[6 * id + axis] + boxes_[6 * id + 3 + axis]);
+                    const float* box = boxes + 6 * id;
+                    refs_[id] = {{box[0], box[1], box[2]},
+                                 std::uint32_t(id),
+                                 {box[3], box[4], box[5]},
+                                 0.0f};
                 }
             },
             threads_);
@@ -186,8 +172,8 @@ class Builder {
             [&](std::uint32_t from, std::uint32_t to) {
                 Range part;
                 for (std::uint32_t i = from; i < to; ++i) {
-                    part.bounds.grow(box(order[i]));
-                    part.centroids.grow(centroid(order[i]));
+                    part.bounds.grow(refs_[i].box());
+                    part.centroids.grow(refs_[i].centroid());
                 }
                 return part;
             },
@@ -215,9 +201,11 @@ class Builder {
     }
 
     unsigned threads() const { return threads_; }
+    // The id of the primitive at position i of the order, in which each leaf owns a
+    // consecutive range.
+    std::uint32_t idAt(std::size_t i) const { return refs_[i].id; }
 
-    std::vector<std::uint32_t> order; // primitive ids; each leaf owns a consecutive range
-    PhaseProgress progress;           // the primitives in leaves so far
+    PhaseProgress progress; // the primitives in leaves so far
 
   private:
     // How the node over range is made: a leaf, or an interior node over left and right
@@ -385,18 +373,6 @@ class Builder {
         return link(link, 0);
     }
 
-    Box box(std::uint32_t id) const {
-        const float* b = boxes_ + 6 * std::size_t(id);
-        return {{b[0], b[1], b[2]}, {b[3], b[4], b[5]}};
-    }
-    glm::vec3 centroid(std::uint32_t id) const {
-        const float* c = centroids_.data() + 3 * std::size_t(id);
-        return {c[0], c[1], c[2]};
-    }
-    float centroid(std::uint32_t id, int axis) const {
-        return centroids_[3 * std::size_t(id) + axis];
-    }
-
     static int longestAxis(const Box& box) {
         glm::vec3 e = box.hi - box.lo;
         return e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
@@ -408,44 +384,62 @@ class Builder {
         const float lo = range.centroids.lo[axis];
         const float scale = float(kBins) / (range.centroids.hi[axis] - lo);
         if (!std::isfinite(scale)) return false; // a subnormal extent: nothing to bin
-        auto binOf = [&](std::uint32_t id) {
-            return std::min(kBins - 1, int((centroid(id, axis) - lo) * scale));
+        auto binOf = [&](const PrimitiveRef& ref) {
+            return std::min(kBins - 1, int((ref.centroid(axis) - lo) * scale));
         };
         const Bins bins = reduceBlocks(
             range.begin, range.end, threads,
             [&](std::uint32_t from, std::uint32_t to) {
-                Bins blockBins;
-                for (std::uint32_t i = from; i < to; ++i) {
-                    std::uint32_t id = order[i];
-                    Bin& bin = blockBins[binOf(id)];
-                    bin.bounds.grow(box(id));
-                    bin.centroids.grow(centroid(id));
+                auto add = [&](Bins& into, const PrimitiveRef& ref) {
+                    Bin& bin = into[binOf(ref)];
+                    const Float4 boxLo = ref.lo4(), boxHi = ref.hi4();
+                    const Float4 centroid = 0.5f * (boxLo + boxHi);
+                    bin.bounds.grow(boxLo, boxHi);
+                    bin.centroids.grow(centroid, centroid);
                     ++bin.count;
+                };
+                Bins blockBins;
+                std::uint32_t i = from;
+                if (to - from >= 64) {
+                    Bins odd;
+                    for (; i + 1 < to; i += 2) {
+                        add(blockBins, refs_[i]);
+                        add(odd, refs_[i + 1]);
+                    }
+                    mergeBins(odd, blockBins);
                 }
+                for (; i < to; ++i)
+                    add(blockBins, refs_[i]);
                 return blockBins;
             },
             mergeBins);
-        // Sweep from the right for the right side's cost of each plane, then from the left.
-        std::array<float, kBins - 1> rightCost{};
-        Box accumulated;
+        // The planes just after each filled bin but the last: a plane after an empty bin
+        // costs what the plane before it does (an empty box grows nothing), and one with
+        // nothing on a side is no split. Swept from the right for the right side's cost of
+        // each, then from the left; the first of equal costs is taken.
+        std::array<int, kBins> filled{};
+        int filledCount = 0;
+        for (int i = 0; i < kBins; ++i)
+            if (bins[i].count) filled[filledCount++] = i;
+        std::array<float, kBins> rightCost{};
+        Box4 accumulated;
         std::uint32_t count = 0;
-        for (int i = kBins - 1; i > 0; --i) {
-            accumulated.grow(bins[i].bounds);
-            count += bins[i].count;
-            rightCost[i - 1] = count ? accumulated.halfArea() * float(count) : kInfinity;
+        for (int j = filledCount - 1; j > 0; --j) {
+            accumulated.grow(bins[filled[j]].bounds);
+            count += bins[filled[j]].count;
+            rightCost[j - 1] = accumulated.halfArea() * float(count);
         }
         int best = -1;
         float bestCost = kInfinity;
-        accumulated = Box{};
+        accumulated = Box4{};
         count = 0;
-        for (int i = 0; i < kBins - 1; ++i) {
-            accumulated.grow(bins[i].bounds);
-            count += bins[i].count;
-            if (count == 0) continue;
-            float cost = accumulated.halfArea() * float(count) + rightCost[i];
+        for (int j = 0; j + 1 < filledCount; ++j) {
+            accumulated.grow(bins[filled[j]].bounds);
+            count += bins[filled[j]].count;
+            const float cost = accumulated.halfArea() * float(count) + rightCost[j];
             if (cost < bestCost) {
                 bestCost = cost;
-                best = i;
+                best = filled[j];
             }
         }
         const float area = range.bounds.halfArea();
@@ -455,17 +449,18 @@ class Builder {
             leafCost <= settings_.traversalCost * area + bestCost)
             return false;
 
-        auto first = order.begin() + range.begin;
-        auto middle = std::partition(first, order.begin() + range.end,
-                                     [&](std::uint32_t id) { return binOf(id) <= best; });
-        std::uint32_t mid = std::uint32_t(middle - order.begin());
-        left = {range.begin, mid, {}, {}};
-        right = {mid, range.end, {}, {}};
+        auto first = refs_.begin() + range.begin;
+        auto middle = std::partition(first, refs_.begin() + range.end,
+                                     [&](const PrimitiveRef& ref) { return binOf(ref) <= best; });
+        std::uint32_t mid = std::uint32_t(middle - refs_.begin());
+        Bin leftBins, rightBins;
         for (int i = 0; i < kBins; ++i) {
-            Range& side = i <= best ? left : right;
+            Bin& side = i <= best ? leftBins : rightBins;
             side.bounds.grow(bins[i].bounds);
             side.centroids.grow(bins[i].centroids);
         }
+        left = {range.begin, mid, leftBins.bounds.box(), leftBins.centroids.box()};
+        right = {mid, range.end, rightBins.bounds.box(), rightBins.centroids.box()};
         return true;
     }
 
@@ -475,9 +470,10 @@ class Builder {
                      Range& left, Range& right) {
         std::uint32_t mid = range.begin + range.size() / 2;
         if (sortByCentroid)
-            std::nth_element(order.begin() + range.begin, order.begin() + mid,
-                             order.begin() + range.end, [&](std::uint32_t a, std::uint32_t b) {
-                                 return centroid(a, axis) < centroid(b, axis);
+            std::nth_element(refs_.begin() + range.begin, refs_.begin() + mid,
+                             refs_.begin() + range.end,
+                             [&](const PrimitiveRef& a, const PrimitiveRef& b) {
+                                 return a.centroid(axis) < b.centroid(axis);
                              });
         left = rangeOf(range.begin, mid, threads);
         right = rangeOf(mid, range.end, threads);
@@ -487,12 +483,12 @@ class Builder {
     // leaf and a triangle leaf, since a leaf indexes one array.
     Subtree makeLeaf(const Range& range, std::uint32_t depth, std::vector<gpu::GpuBvhNode>& out) {
         progress.advance(range.size());
-        auto first = order.begin() + range.begin, last = order.begin() + range.end;
-        auto isSphere = [&](std::uint32_t id) { return id < sphereCount_; };
+        auto first = refs_.begin() + range.begin, last = refs_.begin() + range.end;
+        auto isSphere = [&](const PrimitiveRef& ref) { return ref.id < sphereCount_; };
         auto middle = std::partition(first, last, isSphere);
         if (middle == first || middle == last)
             return {leafChild(range.bounds, range.begin, range.size(), middle == last), depth};
-        std::uint32_t mid = std::uint32_t(middle - order.begin());
+        std::uint32_t mid = std::uint32_t(middle - refs_.begin());
         Range spheres = rangeOf(range.begin, mid), triangles = rangeOf(mid, range.end);
         const std::uint32_t self = std::uint32_t(out.size());
         out.emplace_back();
@@ -519,16 +515,15 @@ class Builder {
         }
     }
 
-    const float* boxes_;
+    std::vector<PrimitiveRef> refs_; // partitioned in place: each node's are consecutive
     std::uint32_t sphereCount_;
     BvhSettings settings_;
-    unsigned threads_;             // above 1: the build runs in tasks (buildInTasks)
-    std::vector<float> centroids_; // 3 floats per primitive
+    unsigned threads_; // above 1: the build runs in tasks (buildInTasks)
 };
 
 } // namespace
 
-Bvh buildBvh(const PrimitiveBounds& input, const BvhSettings& settings) {
+Bvh buildBvh(PrimitiveBounds input, const BvhSettings& settings) {
     Bvh bvh;
     const std::size_t n = input.size();
     if (n == 0) return bvh;
@@ -539,6 +534,7 @@ Bvh buildBvh(const PrimitiveBounds& input, const BvhSettings& settings) {
                                     std::to_string(BVH_MAX_LEAF_COUNT));
 
     Builder builder(input, settings);
+    release(input.boxes); // the builder holds a copy, in its order
     const unsigned threads = builder.threads();
     Range root = builder.rangeOf(0, std::uint32_t(n), threads);
     if (builder.levelsNeeded(root.size()) > settings.maxDepth)
@@ -557,17 +553,17 @@ Bvh buildBvh(const PrimitiveBounds& input, const BvhSettings& settings) {
         setBvhChild(bvh.nodes[0], BvhSide::Right, empty);
     }
 
-    // The leaves in depth-first order are the leaf order, and their ranges of builder.order
-    // follow one another in that order: a primitive's slot is the number of its kind before
-    // it in builder.order, and a leaf's first slot that of its first primitive.
+    // The leaves in depth-first order are the leaf order, and their ranges of the builder's
+    // order follow one another in that order: a primitive's slot is the number of its kind
+    // before it in that order, and a leaf's first slot that of its first primitive.
     // On all threads: each block's spheres counted, then its slots numbered from the counts
     // of the blocks before it.
-    const std::vector<std::uint32_t>& order = builder.order;
     const std::vector<std::uint32_t> blockSpheres = mapBlocks<std::uint32_t>(
         0, std::uint32_t(n), threads, [&](std::uint32_t from, std::uint32_t to) {
-            return std::uint32_t(
-                std::count_if(order.begin() + from, order.begin() + to,
-                              [&](std::uint32_t id) { return id < input.sphereCount; }));
+            std::uint32_t spheres = 0;
+            for (std::uint32_t i = from; i < to; ++i)
+                spheres += builder.idAt(i) < input.sphereCount;
+            return spheres;
         });
     const std::vector<IndexRange> blocks = passBlocks(0, std::uint32_t(n), threads);
     std::vector<std::uint32_t> slotAt;
@@ -583,7 +579,7 @@ Bvh buildBvh(const PrimitiveBounds& input, const BvhSettings& settings) {
             std::uint32_t spheres = spheresBefore[b];
             auto triangles = std::uint32_t(blocks[b].begin - spheres);
             for (std::size_t i = blocks[b].begin; i < blocks[b].end; ++i) {
-                const std::uint32_t id = order[i];
+                const std::uint32_t id = builder.idAt(i);
                 if (id < input.sphereCount) {
                     slotAt[i] = spheres;
                     bvh.sphereOrder[spheres++] = id;

@@ -52,5 +52,6 @@ struct Bvh {
 };
 
 // Builds the hierarchy. Every primitive ends in exactly one leaf; every leaf holds one
-// kind and its slots are consecutive. An empty input gives an empty hierarchy.
-Bvh buildBvh(const PrimitiveBounds& bounds, const BvhSettings& settings = {});
+// kind and its slots are consecutive. An empty input gives an empty hierarchy. The bounds
+// are taken by value, so that a caller who moves them in frees their boxes during the build.
+Bvh buildBvh(PrimitiveBounds bounds, const BvhSettings& settings = {});
