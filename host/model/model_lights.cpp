@@ -5,6 +5,7 @@
 
 #include "model/exact_vectors.h"
 
+#include <algorithm>
 #include <map>
 
 using namespace exact_vectors;
@@ -20,6 +21,10 @@ std::vector<Light> emitterLights(const Mesh& mesh, double lift) {
         double area = 0.0;
         glm::dvec3 weighted{0.0}, normal{0.0};
     };
+    // Most models emit nothing: then no triangle need be looked at.
+    if (std::none_of(mesh.materials.begin(), mesh.materials.end(),
+                     [](const MeshMaterial& m) { return m.emission != glm::dvec3(0.0); }))
+        return {};
     std::vector<std::uint32_t> order;
     std::map<std::uint32_t, Sums> sums;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {

@@ -1,10 +1,12 @@
 #include "model/model_mesh.h"
 
 #include "base/parallel.h"
+#include "base/populated_memory.h"
 #include "model/exact_vectors.h"
 
 #include <algorithm>
 #include <cstring>
+#include <numeric>
 
 namespace {
 
@@ -111,8 +113,16 @@ Mesh modelMesh(const SourceModel& model, const std::vector<glm::dvec3>& position
                std::optional<SmoothNormals> smooth, const VertexPlacement& placement,
                PhaseProgress* progress) {
     const std::size_t triangles = model.triangles.size();
-    const auto kept =
-        static_cast<std::size_t>(std::count(fates.begin(), fates.end(), TriangleFate::kept));
+    // The kept triangles counted by ranges on all threads, for where each range's go.
+    const std::vector<IndexRange> triangleRanges = splitRange(triangles, 1 << 16);
+    std::vector<std::size_t> keptBefore(triangleRanges.size() + 1, 0);
+    parallelFor(triangleRanges.size(), [&](std::size_t k) {
+        keptBefore[k + 1] =
+            std::size_t(std::count(fates.begin() + triangleRanges[k].begin,
+                                   fates.begin() + triangleRanges[k].end, TriangleFate::kept));
+    });
+    std::partial_sum(keptBefore.begin(), keptBefore.end(), keptBefore.begin());
+    const std::size_t kept = keptBefore.back();
     Mesh mesh;
     mesh.triangles.reserve(kept);
     const bool texcoords = !model.texcoords.empty();
@@ -167,13 +177,17 @@ Mesh modelMesh(const SourceModel& model, const std::vector<glm::dvec3>& position
     // where the corners have their normals. The kept triangles' materials and lines are
     // copied after it, for the same reason.
     smooth.reset();
-    mesh.triangleMaterials.reserve(kept);
-    mesh.triangleLines.reserve(kept);
-    for (std::size_t t = 0; t < triangles; ++t) {
-        if (fates[t] != TriangleFate::kept) continue;
-        mesh.triangleMaterials.push_back(model.triangles.material(t));
-        mesh.triangleLines.push_back(model.triangles.line(t));
-    }
+    // On all threads, each range's from the count of the ranges before it.
+    resizePopulated(mesh.triangleMaterials, kept);
+    resizePopulated(mesh.triangleLines, kept);
+    parallelFor(triangleRanges.size(), [&](std::size_t k) {
+        std::size_t slot = keptBefore[k];
+        for (std::size_t t = triangleRanges[k].begin; t < triangleRanges[k].end; ++t) {
+            if (fates[t] != TriangleFate::kept) continue;
+            mesh.triangleMaterials[slot] = model.triangles.material(t);
+            mesh.triangleLines[slot++] = model.triangles.line(t);
+        }
+    });
 
     // Each vertex's other attributes, from its position's and texture coordinates' indices;
     // its normal turned in place.

@@ -23,8 +23,13 @@ class SmoothNormals {
     glm::dvec3 at(std::uint32_t face, std::uint32_t position) const;
 
   private:
-    // Whether face other's unit normal is within the crease angle of face's.
+    // Whether face other's unit normal is within the crease angle of face's (symmetric).
     bool withinCrease(std::uint32_t face, std::uint32_t other) const;
+    // Whether every two faces around position are within the crease angle of each other:
+    // then at gives each of them the same normal, sumAround's.
+    bool allWithinCrease(std::uint32_t position) const;
+    // The normalised sum of the Newell normals of every face around position, in order.
+    glm::dvec3 sumAround(std::uint32_t position) const;
 
     double cosine_;
     bool everywhere_;
@@ -34,4 +39,7 @@ class SmoothNormals {
     std::vector<glm::vec3> unit_;
     // The faces around each position, in file order.
     KeyedLists facesAt_;
+    // Per position: whether allWithinCrease, and then its faces' normal.
+    std::vector<std::uint8_t> shared_;
+    std::vector<glm::dvec3> sharedNormal_;
 };
