@@ -64,13 +64,14 @@ OrderedDedup orderedDedup(std::size_t count, const ValueAt& valueAt) {
         const std::size_t mask = slots.size() - 1;
         for (std::size_t k = shardStart[s]; k < shardStart[s + 1]; ++k) {
             const std::uint32_t i = order[k];
-            const T value = valueAt(i);
             std::size_t slot = hashes[i] & mask;
             first[i] = i;
             for (; slots[slot] != 0; slot = (slot + 1) & mask) {
                 const std::uint32_t other = slots[slot] - 1;
                 if (hashes[other] != hashes[i]) continue;
-                const T otherValue = valueAt(other);
+                // The values are read only where the hashes agree: a value that repeats
+                // none before it (most of a mesh's) is never read here.
+                const T value = valueAt(i), otherValue = valueAt(other);
                 if (std::memcmp(&otherValue, &value, sizeof(T)) == 0) {
                     first[i] = other;
                     break;

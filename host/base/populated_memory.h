@@ -13,7 +13,8 @@
 void populatePages(void* data, std::size_t bytes);
 
 // values with size elements (the new ones value-initialised), its storage exactly that large
-// and mapped by populatePages first when it had to grow.
+// when it had to grow, the new elements' pages mapped by populatePages first (also those of
+// storage reserved before and not yet written).
 template <typename T> void resizePopulated(std::vector<T>& values, std::size_t size) {
     if (size > values.capacity()) {
         std::vector<T> larger;
@@ -21,6 +22,15 @@ template <typename T> void resizePopulated(std::vector<T>& values, std::size_t s
         populatePages(larger.data(), size * sizeof(T));
         larger.insert(larger.end(), values.begin(), values.end());
         values.swap(larger);
+    } else if (size > values.size()) {
+        populatePages(values.data() + values.size(), (size - values.size()) * sizeof(T));
     }
     values.resize(size);
+}
+
+// Room for at least size elements, its pages mapped by populatePages: for an array that one
+// thread then fills by push_back, whose page faults would otherwise come one at a time.
+template <typename T> void reservePopulated(std::vector<T>& values, std::size_t size) {
+    values.reserve(size);
+    populatePages(values.data() + values.size(), (values.capacity() - values.size()) * sizeof(T));
 }

@@ -39,10 +39,11 @@ class VertexChains {
         : first_(positions, kNone), texcoords_(texcoords), normals_(normals) {
         // As many vertices as positions, the common case, without growing: a copy of
         // growing arrays costs more than their look-ups.
-        positionOf_.reserve(positions);
-        next_.reserve(positions);
-        normals_.reserve(positions);
-        if (texcoords_) texcoordOf_.reserve(positions);
+        // Their pages mapped on all threads: the look-ups that fill them run on one.
+        reservePopulated(positionOf_, positions);
+        reservePopulated(next_, positions);
+        reservePopulated(normals_, positions);
+        if (texcoords_) reservePopulated(texcoordOf_, positions);
     }
 
     // The vertex of key, made if no corner before had it. The chain holds only vertices at
@@ -124,7 +125,7 @@ Mesh modelMesh(const SourceModel& model, const std::vector<glm::dvec3>& position
     std::partial_sum(keptBefore.begin(), keptBefore.end(), keptBefore.begin());
     const std::size_t kept = keptBefore.back();
     Mesh mesh;
-    mesh.triangles.reserve(kept);
+    reservePopulated(mesh.triangles, kept);
     const bool texcoords = !model.texcoords.empty();
     VertexChains vertexOf(positions.size(), texcoords, mesh.normals);
     // A block's corners keyed on all threads, then looked up in order on one, while the

@@ -29,6 +29,29 @@ Plane planeOf(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
     return plane;
 }
 
+// A triangle of nonzero area as the flat test reads it, its plane and corners read once for
+// all the tests at a vertex rather than through the corner indices at each.
+struct FlatTest {
+    std::uint32_t triangle = 0;
+    Plane plane;
+    glm::dvec3 corners[3];
+};
+
+// Whether every corner of t lies in u's plane, to within the larger of their tolerances.
+bool liesIn(const FlatTest& t, const FlatTest& u) {
+    for (const glm::dvec3& corner : t.corners) {
+        const double distance = glm::dot(u.plane.normal, corner) - u.plane.offset;
+        if (!(std::abs(distance) <= std::max(u.plane.tolerance, t.plane.tolerance))) return false;
+    }
+    return true;
+}
+
+// Both ways, so that a sliver's ill-determined normal cannot join a triangle it is not flat
+// with.
+bool flat(const FlatTest& t, const FlatTest& u) {
+    return liesIn(t, u) && liesIn(u, t);
+}
+
 // Disjoint sets with path halving.
 struct Patches {
     std::vector<std::uint32_t> parent;
@@ -56,22 +79,6 @@ std::vector<std::uint32_t> patchesOf(const std::vector<glm::dvec3>& positions,
             planes[t] = planeOf(positions[cornerAt(t, 0)], positions[cornerAt(t, 1)],
                                 positions[cornerAt(t, 2)]);
     });
-    // Whether every corner of each triangle lies in the other's plane (both ways, so that a
-    // sliver's ill-determined normal cannot join a triangle it is not flat with).
-    auto liesIn = [&](std::size_t t, std::size_t u) {
-        const Plane& plane = planes[u];
-        for (std::size_t k = 0; k < 3; ++k) {
-            const double distance =
-                glm::dot(plane.normal, positions[cornerAt(t, k)]) - plane.offset;
-            if (!(std::abs(distance) <= std::max(plane.tolerance, planes[t].tolerance)))
-                return false;
-        }
-        return true;
-    };
-    auto flat = [&](std::size_t t, std::size_t u) {
-        return planes[t].tolerance > 0.0 && planes[u].tolerance > 0.0 && liesIn(t, u) &&
-               liesIn(u, t);
-    };
 
     // The triangles at each vertex.
     const KeyedLists trianglesAt = keyedLists(positions.size(), triangleCount, 3 * triangleCount,
@@ -96,18 +103,22 @@ std::vector<std::uint32_t> patchesOf(const std::vector<glm::dvec3>& positions,
             joins[i].clear();
             for (std::size_t v = vertexRanges[first + i].begin; v < vertexRanges[first + i].end;
                  ++v) {
-                std::uint32_t representatives[kPlanesPerVertex];
+                FlatTest representatives[kPlanesPerVertex];
                 int planeCount = 0;
                 for (std::uint32_t at = trianglesAt.start[v]; at < trianglesAt.start[v + 1]; ++at) {
                     const std::uint32_t t = trianglesAt.items[at];
                     if (planes[t].tolerance == 0.0) continue;
+                    const FlatTest triangle{t,
+                                            planes[t],
+                                            {positions[cornerAt(t, 0)], positions[cornerAt(t, 1)],
+                                             positions[cornerAt(t, 2)]}};
                     int k = 0;
-                    while (k < planeCount && !flat(t, representatives[k]))
+                    while (k < planeCount && !flat(triangle, representatives[k]))
                         ++k;
                     if (k < planeCount)
-                        joins[i].push_back({t, representatives[k]});
+                        joins[i].push_back({t, representatives[k].triangle});
                     else if (planeCount < kPlanesPerVertex)
-                        representatives[planeCount++] = t;
+                        representatives[planeCount++] = triangle;
                 }
             }
         });

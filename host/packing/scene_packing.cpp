@@ -71,9 +71,9 @@ class Candidates {
   public:
     // bound: at least the candidates to come, whose pages are mapped on all threads.
     Candidates(std::size_t bound, bool textured, bool fp64) : textured_(textured), fp64_(fp64) {
-        reserveMapped(cores_, bound);
-        if (textured_) reserveMapped(texcoords_, bound);
-        if (fp64_) reserveMapped(exactPositions_, bound);
+        reservePopulated(cores_, bound);
+        if (textured_) reservePopulated(texcoords_, bound);
+        if (fp64_) reservePopulated(exactPositions_, bound);
     }
 
     std::uint32_t add(const PackedVertex& vertex) {
@@ -124,11 +124,6 @@ class Candidates {
     }
 
   private:
-    template <typename T> static void reserveMapped(std::vector<T>& values, std::size_t bound) {
-        values.reserve(bound); // address space: a page costs only once written
-        populatePages(values.data(), bound * sizeof(T));
-    }
-
     struct Core {
         glm::vec3 position;
         glm::vec3 normal;
@@ -241,7 +236,7 @@ PackingInputPtr readForPacking(const Scene& scene, Precision precision) {
     }
 
     const std::size_t triangles = triangleCount(scene);
-    cornersOfTriangles.reserve(3 * triangles);
+    reservePopulated(cornersOfTriangles, 3 * triangles);
     auto packedVertex = [&](const glm::dvec3& position, const glm::dvec3& normal,
                             std::uint32_t material, glm::dvec2 texcoord) {
         PackedVertex vertex{};
@@ -351,8 +346,8 @@ PackedScene finishPacking(PackingInputPtr input) {
         for (std::size_t t = 0; t < packed.triangles.size(); ++t)
             packed.triangles[t].w = patches[t];
     }
-    packed.vertexPositions.reserve(candidates.size());
-    packed.vertexNormals.reserve(3 * candidates.size());
+    reservePopulated(packed.vertexPositions, candidates.size());
+    reservePopulated(packed.vertexNormals, 3 * candidates.size());
     // 28 bytes a vertex: the material index rides in the position's unused w, and the
     // normal takes three floats rather than a padded vec4.
     for (std::size_t v = 0; v < candidates.size(); ++v) {
