@@ -92,8 +92,11 @@ std::vector<std::uint32_t> patchesOf(const std::vector<glm::dvec3>& positions,
     // joins made after each batch: a patch's number is its smallest triangle's (join keeps
     // the smaller root), whatever order its triangles were joined in.
     Patches patches;
-    patches.parent.resize(triangleCount);
-    std::iota(patches.parent.begin(), patches.parent.end(), 0u);
+    resizePopulated(patches.parent, triangleCount);
+    parallelForRanges(triangleCount, 1 << 16, [&](IndexRange range) {
+        std::iota(patches.parent.begin() + std::ptrdiff_t(range.begin),
+                  patches.parent.begin() + std::ptrdiff_t(range.end), std::uint32_t(range.begin));
+    });
     const std::vector<IndexRange> vertexRanges = splitRange(positions.size(), 16384);
     constexpr std::size_t kRangesABatch = 64;
     std::vector<std::vector<std::array<std::uint32_t, 2>>> joins(kRangesABatch);
@@ -126,9 +129,17 @@ std::vector<std::uint32_t> patchesOf(const std::vector<glm::dvec3>& positions,
             for (const auto& [t, u] : joins[i])
                 patches.join(t, u);
     }
-    std::vector<std::uint32_t> patchOf(triangleCount);
-    for (std::uint32_t t = 0; t < triangleCount; ++t)
-        patchOf[t] = patches.find(t);
+    // Every join made: the roots are read on all threads, without find's path halving.
+    std::vector<std::uint32_t> patchOf;
+    resizePopulated(patchOf, triangleCount);
+    parallelForRanges(triangleCount, 1 << 16, [&](IndexRange range) {
+        for (std::size_t t = range.begin; t < range.end; ++t) {
+            std::uint32_t root = std::uint32_t(t);
+            while (patches.parent[root] != root)
+                root = patches.parent[root];
+            patchOf[t] = root;
+        }
+    });
     return patchOf;
 }
 

@@ -338,29 +338,39 @@ PackedScene finishPacking(PackingInputPtr input) {
                         : glm::dvec4(glm::dvec3(glm::vec3(vertex.position)), 0.0);
         };
         const OrderedDedup cornerIndices = orderedDedup<glm::dvec4>(candidates.size(), cornerOf);
-        std::vector<glm::dvec3> cornerPositions(cornerIndices.firstOf.size());
-        for (std::size_t k = 0; k < cornerPositions.size(); ++k)
-            cornerPositions[k] = glm::dvec3(cornerOf(cornerIndices.firstOf[k]));
+        std::vector<glm::dvec3> cornerPositions;
+        resizePopulated(cornerPositions, cornerIndices.firstOf.size());
+        parallelForRanges(cornerPositions.size(), 1 << 15, [&](IndexRange range) {
+            for (std::size_t k = range.begin; k < range.end; ++k)
+                cornerPositions[k] = glm::dvec3(cornerOf(cornerIndices.firstOf[k]));
+        });
         const std::vector<std::uint32_t> patches =
             flatPatches(cornerPositions, packed.triangles, cornerIndices.indexOf);
-        for (std::size_t t = 0; t < packed.triangles.size(); ++t)
-            packed.triangles[t].w = patches[t];
+        parallelForRanges(packed.triangles.size(), 1 << 16, [&](IndexRange range) {
+            for (std::size_t t = range.begin; t < range.end; ++t)
+                packed.triangles[t].w = patches[t];
+        });
     }
-    reservePopulated(packed.vertexPositions, candidates.size());
-    reservePopulated(packed.vertexNormals, 3 * candidates.size());
     // 28 bytes a vertex: the material index rides in the position's unused w, and the
-    // normal takes three floats rather than a padded vec4.
-    for (std::size_t v = 0; v < candidates.size(); ++v) {
-        const PackedVertex vertex = candidates[v];
-        packed.vertexPositions.push_back(
-            glm::vec4(glm::vec3(vertex.position), std::bit_cast<float>(vertex.material)));
-        packed.vertexNormals.insert(packed.vertexNormals.end(),
-                                    {vertex.normal.x, vertex.normal.y, vertex.normal.z});
-        if (fp64)
-            packed.vertexPositions64.push_back(
-                glm::dvec4(glm::dvec3(vertex.exactPosition), double(vertex.material)));
-        if (textured) packed.vertexTexcoords.push_back(vertex.texcoord);
-    }
+    // normal takes three floats rather than a padded vec4. Written on all threads.
+    const std::size_t vertices = candidates.size();
+    resizePopulated(packed.vertexPositions, vertices);
+    resizePopulated(packed.vertexNormals, 3 * vertices);
+    if (fp64) resizePopulated(packed.vertexPositions64, vertices);
+    if (textured) resizePopulated(packed.vertexTexcoords, vertices);
+    parallelForRanges(vertices, 1 << 15, [&](IndexRange range) {
+        for (std::size_t v = range.begin; v < range.end; ++v) {
+            const PackedVertex vertex = candidates[v];
+            packed.vertexPositions[v] =
+                glm::vec4(glm::vec3(vertex.position), std::bit_cast<float>(vertex.material));
+            for (int axis = 0; axis < 3; ++axis)
+                packed.vertexNormals[3 * v + std::size_t(axis)] = vertex.normal[axis];
+            if (fp64)
+                packed.vertexPositions64[v] =
+                    glm::dvec4(glm::dvec3(vertex.exactPosition), double(vertex.material));
+            if (textured) packed.vertexTexcoords[v] = vertex.texcoord;
+        }
+    });
     for (const PackedMaterial& material : input->materials) {
         packed.materials.push_back(material.phong);
         if (textured) packed.materialTextures.push_back(material.texture);
