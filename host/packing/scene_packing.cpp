@@ -443,30 +443,38 @@ void writeTriangleCorners(const PackedScene& packed, void* destination) {
     const bool fp64 = !packed.vertexPositions64.empty();
     auto* corners = static_cast<glm::vec4*>(destination);
     auto* corners64 = static_cast<glm::dvec4*>(destination);
-    for (const glm::uvec4& triangle : packed.triangles) {
-        const std::uint32_t words[3] = {triangle.w, triangle.x, triangle.y};
-        for (int k = 0; k < 3; ++k) {
-            if (fp64)
-                *corners64++ =
-                    glm::dvec4(glm::dvec3(packed.vertexPositions64[triangle[k]]), double(words[k]));
-            else
-                *corners++ = glm::vec4(glm::vec3(packed.vertexPositions[triangle[k]]),
-                                       std::bit_cast<float>(words[k]));
+    parallelForRanges(packed.triangles.size(), 1 << 15, [&](IndexRange range) {
+        for (std::size_t t = range.begin; t < range.end; ++t) {
+            const glm::uvec4& triangle = packed.triangles[t];
+            const std::uint32_t words[3] = {triangle.w, triangle.x, triangle.y};
+            for (std::size_t k = 0; k < 3; ++k) {
+                if (fp64)
+                    corners64[3 * t + k] = glm::dvec4(
+                        glm::dvec3(packed.vertexPositions64[triangle[int(k)]]), double(words[k]));
+                else
+                    corners[3 * t + k] =
+                        glm::vec4(glm::vec3(packed.vertexPositions[triangle[int(k)]]),
+                                  std::bit_cast<float>(words[k]));
+            }
         }
-    }
+    });
 }
 
 void writeLastVertices(const PackedScene& packed, void* destination) {
     auto* last = static_cast<std::uint32_t*>(destination);
-    for (const glm::uvec4& triangle : packed.triangles)
-        *last++ = triangle.z;
+    parallelForRanges(packed.triangles.size(), 1 << 16, [&](IndexRange range) {
+        for (std::size_t t = range.begin; t < range.end; ++t)
+            last[t] = packed.triangles[t].z;
+    });
 }
 
 void writeNormalsAndMaterials(const PackedScene& packed, void* destination) {
     auto* out = static_cast<glm::vec4*>(destination);
-    for (std::size_t v = 0; v < packed.vertexPositions.size(); ++v)
-        *out++ = glm::vec4(packed.vertexNormals[3 * v], packed.vertexNormals[3 * v + 1],
-                           packed.vertexNormals[3 * v + 2], packed.vertexPositions[v].w);
+    parallelForRanges(packed.vertexPositions.size(), 1 << 15, [&](IndexRange range) {
+        for (std::size_t v = range.begin; v < range.end; ++v)
+            out[v] = glm::vec4(packed.vertexNormals[3 * v], packed.vertexNormals[3 * v + 1],
+                               packed.vertexNormals[3 * v + 2], packed.vertexPositions[v].w);
+    });
 }
 
 GpuTriangleArrays gpuTriangleArrays(const PackedScene& packed) {

@@ -2,6 +2,7 @@
 
 #include "base/notes.h"
 #include "base/parallel.h"
+#include "base/populated_memory.h"
 #include "base/release.h"
 #include "base/scope_guard.h"
 #include "base/startup_phases.h"
@@ -106,9 +107,11 @@ SlotSources slotSources(FileLines lines, PackedScene& packed) {
     for (std::uint32_t index : sources.sphereIndex)
         sources.sphereLine.push_back(lines.spheres[index]);
     sources.triangleIndex = std::move(packed.triangleOrder);
-    sources.triangleLine.reserve(sources.triangleIndex.size());
-    for (std::uint32_t index : sources.triangleIndex)
-        sources.triangleLine.push_back(lines.triangles[index]);
+    resizePopulated(sources.triangleLine, sources.triangleIndex.size());
+    parallelForRanges(sources.triangleIndex.size(), 1 << 16, [&](IndexRange range) {
+        for (std::size_t slot = range.begin; slot < range.end; ++slot)
+            sources.triangleLine[slot] = lines.triangles[sources.triangleIndex[slot]];
+    });
     sources.lightLine = std::move(lines.lights);
     return sources;
 }

@@ -1,5 +1,6 @@
 #include "render/scene_upload.h"
 
+#include "base/parallel.h"
 #include "base/release.h"
 #include "base/scope_guard.h"
 #include "gpu/vk_check.h"
@@ -57,9 +58,15 @@ void releaseWritten(const bool (&written)[BINDING_COUNT], PackedScene& packed) {
     if (written[BINDING_TEXTURE_PIXELS]) release(packed.texturePixels);
 }
 
+// An array copied as it is, in blocks on all threads: one thread's copy of a large scene's
+// arrays (faulting in the mapped memory's pages as it went) was most of the upload.
 template <typename T> ArrayView view(std::uint32_t binding, const std::vector<T>& values) {
     return {binding, values.size() * sizeof(T), [&values](void* destination) {
-                std::memcpy(destination, values.data(), values.size() * sizeof(T));
+                const auto* from = reinterpret_cast<const std::uint8_t*>(values.data());
+                auto* to = static_cast<std::uint8_t*>(destination);
+                parallelForRanges(values.size() * sizeof(T), 1 << 20, [&](IndexRange range) {
+                    std::memcpy(to + range.begin, from + range.begin, range.end - range.begin);
+                });
             }};
 }
 

@@ -1,5 +1,7 @@
 #include "scene/scene_triangles.h"
 
+#include "base/populated_memory.h"
+
 #include <stdexcept>
 #include <string>
 
@@ -53,7 +55,7 @@ std::optional<TriangleTexturing> triangleTexturingAt(const Scene& scene, std::si
 
 std::vector<std::int64_t> triangleLines(const Scene& scene) {
     std::vector<std::int64_t> lines;
-    lines.reserve(triangleCount(scene));
+    reservePopulated(lines, triangleCount(scene)); // a model's copy is one large memcpy
     for (const Triangle& triangle : scene.triangles)
         lines.push_back(triangle.line);
     for (const Mesh& mesh : scene.meshes)
