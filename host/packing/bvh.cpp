@@ -47,9 +47,12 @@ constexpr int kBins = 16;
 using bvh_boxes::Bin;
 using bvh_boxes::Box;
 using bvh_boxes::Box4;
+using bvh_boxes::boxOf;
+using bvh_boxes::centroidOf;
 using bvh_boxes::Float4;
+using bvh_boxes::highCorner;
 using bvh_boxes::kInfinity;
-using bvh_boxes::PrimitiveRef;
+using bvh_boxes::lowCorner;
 // On several threads, ranges below a task size are built whole by one thread: about
 // kTasksPerThread tasks a thread, so that the last to finish leaves the others idle for
 // little of the build, and none below kSmallestTask, whose hand-out would cost more than
@@ -144,21 +147,18 @@ auto reduceBlocks(std::uint32_t begin, std::uint32_t end, unsigned threads, cons
 
 class Builder {
   public:
-    Builder(const PrimitiveBounds& input, const BvhSettings& settings)
-        : progress("Building the hierarchy", input.size()), sphereCount_(input.sphereCount),
-          settings_(settings), threads_(settings.threads ? settings.threads : workerThreads()) {
-        resizePopulated(refs_, input.size());
-        const float* boxes = input.boxes.data();
+    // Takes the input's boxes as its own array, numbering them in place.
+    Builder(PrimitiveBounds&& input, const BvhSettings& settings)
+        : progress("Building the hierarchy", input.size()), refs_(std::move(input.boxes)),
+          sphereCount_(input.sphereCount), settings_(settings),
+          threads_(settings.threads ? settings.threads : workerThreads()) {
         const std::vector<IndexRange> blocks = passBlocks(0, std::uint32_t(refs_.size()), threads_);
         parallelFor(
             blocks.size(),
             [&](std::size_t b) {
                 for (std::size_t id = blocks[b].begin; id < blocks[b].end; ++id) {
-                    const float* box = boxes + 6 * id;
-                    refs_[id] = {{box[0], box[1], box[2]},
-                                 std::uint32_t(id),
-                                 {box[3], box[4], box[5]},
-                                 0.0f};
+                    refs_[id].id = std::uint32_t(id);
+                    refs_[id].zero = 0.0f;
                 }
             },
             threads_);
@@ -172,8 +172,8 @@ class Builder {
             [&](std::uint32_t from, std::uint32_t to) {
                 Range part;
                 for (std::uint32_t i = from; i < to; ++i) {
-                    part.bounds.grow(refs_[i].box());
-                    part.centroids.grow(refs_[i].centroid());
+                    part.bounds.grow(boxOf(refs_[i]));
+                    part.centroids.grow(centroidOf(refs_[i]));
                 }
                 return part;
             },
@@ -384,15 +384,15 @@ class Builder {
         const float lo = range.centroids.lo[axis];
         const float scale = float(kBins) / (range.centroids.hi[axis] - lo);
         if (!std::isfinite(scale)) return false; // a subnormal extent: nothing to bin
-        auto binOf = [&](const PrimitiveRef& ref) {
-            return std::min(kBins - 1, int((ref.centroid(axis) - lo) * scale));
+        auto binOf = [&](const PrimitiveBox& ref) {
+            return std::min(kBins - 1, int((centroidOf(ref, axis) - lo) * scale));
         };
         const Bins bins = reduceBlocks(
             range.begin, range.end, threads,
             [&](std::uint32_t from, std::uint32_t to) {
-                auto add = [&](Bins& into, const PrimitiveRef& ref) {
+                auto add = [&](Bins& into, const PrimitiveBox& ref) {
                     Bin& bin = into[binOf(ref)];
-                    const Float4 boxLo = ref.lo4(), boxHi = ref.hi4();
+                    const Float4 boxLo = lowCorner(ref), boxHi = highCorner(ref);
                     const Float4 centroid = 0.5f * (boxLo + boxHi);
                     bin.bounds.grow(boxLo, boxHi);
                     bin.centroids.grow(centroid, centroid);
@@ -451,7 +451,7 @@ class Builder {
 
         auto first = refs_.begin() + range.begin;
         auto middle = std::partition(first, refs_.begin() + range.end,
-                                     [&](const PrimitiveRef& ref) { return binOf(ref) <= best; });
+                                     [&](const PrimitiveBox& ref) { return binOf(ref) <= best; });
         std::uint32_t mid = std::uint32_t(middle - refs_.begin());
         Bin leftBins, rightBins;
         for (int i = 0; i < kBins; ++i) {
@@ -472,8 +472,8 @@ class Builder {
         if (sortByCentroid)
             std::nth_element(refs_.begin() + range.begin, refs_.begin() + mid,
                              refs_.begin() + range.end,
-                             [&](const PrimitiveRef& a, const PrimitiveRef& b) {
-                                 return a.centroid(axis) < b.centroid(axis);
+                             [&](const PrimitiveBox& a, const PrimitiveBox& b) {
+                                 return centroidOf(a, axis) < centroidOf(b, axis);
                              });
         left = rangeOf(range.begin, mid, threads);
         right = rangeOf(mid, range.end, threads);
@@ -484,7 +484,7 @@ class Builder {
     Subtree makeLeaf(const Range& range, std::uint32_t depth, std::vector<gpu::GpuBvhNode>& out) {
         progress.advance(range.size());
         auto first = refs_.begin() + range.begin, last = refs_.begin() + range.end;
-        auto isSphere = [&](const PrimitiveRef& ref) { return ref.id < sphereCount_; };
+        auto isSphere = [&](const PrimitiveBox& ref) { return ref.id < sphereCount_; };
         auto middle = std::partition(first, last, isSphere);
         if (middle == first || middle == last)
             return {leafChild(range.bounds, range.begin, range.size(), middle == last), depth};
@@ -515,7 +515,7 @@ class Builder {
         }
     }
 
-    std::vector<PrimitiveRef> refs_; // partitioned in place: each node's are consecutive
+    std::vector<PrimitiveBox> refs_; // partitioned in place: each node's are consecutive
     std::uint32_t sphereCount_;
     BvhSettings settings_;
     unsigned threads_; // above 1: the build runs in tasks (buildInTasks)
@@ -533,8 +533,8 @@ Bvh buildBvh(PrimitiveBounds input, const BvhSettings& settings) {
         throw std::invalid_argument("buildBvh: maxLeafSize must be from 1 to " +
                                     std::to_string(BVH_MAX_LEAF_COUNT));
 
-    Builder builder(input, settings);
-    release(input.boxes); // the builder holds a copy, in its order
+    const std::uint32_t sphereCount = input.sphereCount;
+    Builder builder(std::move(input), settings);
     const unsigned threads = builder.threads();
     Range root = builder.rangeOf(0, std::uint32_t(n), threads);
     if (builder.levelsNeeded(root.size()) > settings.maxDepth)
@@ -562,14 +562,14 @@ Bvh buildBvh(PrimitiveBounds input, const BvhSettings& settings) {
         0, std::uint32_t(n), threads, [&](std::uint32_t from, std::uint32_t to) {
             std::uint32_t spheres = 0;
             for (std::uint32_t i = from; i < to; ++i)
-                spheres += builder.idAt(i) < input.sphereCount;
+                spheres += builder.idAt(i) < sphereCount;
             return spheres;
         });
     const std::vector<IndexRange> blocks = passBlocks(0, std::uint32_t(n), threads);
     std::vector<std::uint32_t> slotAt;
     resizePopulated(slotAt, n);
-    bvh.sphereOrder.resize(input.sphereCount);
-    resizePopulated(bvh.triangleOrder, n - input.sphereCount);
+    bvh.sphereOrder.resize(sphereCount);
+    resizePopulated(bvh.triangleOrder, n - sphereCount);
     std::vector<std::uint32_t> spheresBefore(blocks.size() + 1, 0);
     for (std::size_t b = 0; b < blocks.size(); ++b)
         spheresBefore[b + 1] = spheresBefore[b] + blockSpheres[b];
@@ -580,12 +580,12 @@ Bvh buildBvh(PrimitiveBounds input, const BvhSettings& settings) {
             auto triangles = std::uint32_t(blocks[b].begin - spheres);
             for (std::size_t i = blocks[b].begin; i < blocks[b].end; ++i) {
                 const std::uint32_t id = builder.idAt(i);
-                if (id < input.sphereCount) {
+                if (id < sphereCount) {
                     slotAt[i] = spheres;
                     bvh.sphereOrder[spheres++] = id;
                 } else {
                     slotAt[i] = triangles;
-                    bvh.triangleOrder[triangles++] = id - input.sphereCount;
+                    bvh.triangleOrder[triangles++] = id - sphereCount;
                 }
             }
         },

@@ -11,11 +11,20 @@
 #include <cstdint>
 #include <vector>
 
-// One axis-aligned box per primitive: the input of the builder.
+// A primitive's axis-aligned box, laid out as the builder partitions it in place (half a
+// cache line; packing/bvh_boxes.h), so that it builds in the caller's array, not in a copy.
+struct PrimitiveBox {
+    float lo[3];          // min x y z
+    std::uint32_t id = 0; // the builder's: it numbers the primitives here
+    float hi[3];          // max x y z
+    float zero = 0.0f;    // the builder's: 0
+};
+
+// One box per primitive: the input of the builder.
 struct PrimitiveBounds {
-    std::vector<float> boxes;      // 6 floats per primitive: min x y z, max x y z
+    std::vector<PrimitiveBox> boxes;
     std::uint32_t sphereCount = 0; // primitives [0, sphereCount) are spheres, the rest triangles
-    std::size_t size() const { return boxes.size() / 6; }
+    std::size_t size() const { return boxes.size(); }
 };
 
 // Whether the shader walks a hierarchy or tests every primitive (--accel).

@@ -3,6 +3,8 @@
 // as the builder moves it. The register forms compute the same floats as Box does.
 #pragma once
 
+#include "packing/bvh.h"
+
 #include <glm/glm.hpp>
 
 #include <cstddef>
@@ -64,32 +66,37 @@ struct Box4 {
     }
 };
 
-// A primitive as the builder moves it: its box and its id, half a cache line, partitioned in
-// place so that a range's primitives are read in order when binned and partitioned.
-// Arrays rather than glm vectors, whose operator[] is a switch on the axis.
-struct PrimitiveRef {
-    float lo[3];
-    std::uint32_t id;
-    float hi[3];
-    float zero; // 0, the box's fourth lane
-    Box box() const { return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}; }
-    // The same float as 0.5f * (lo + hi) of the input box, whatever the order of the ids.
-    glm::vec3 centroid() const { return 0.5f * (box().lo + box().hi); }
-    float centroid(int axis) const { return 0.5f * (lo[axis] + hi[axis]); }
-    // The box's corners in registers, fourth lanes 0 (the id's bits masked out of lo's).
-    Float4 lo4() const {
-        Float4 corner;
-        std::memcpy(&corner, this, sizeof corner);
-        return Float4(Int4(corner) & Int4{-1, -1, -1, 0});
-    }
-    Float4 hi4() const {
-        Float4 corner;
-        std::memcpy(&corner, hi, sizeof corner);
-        return corner;
-    }
-};
-static_assert(sizeof(PrimitiveRef) == 32 && offsetof(PrimitiveRef, id) == 12 &&
-              offsetof(PrimitiveRef, zero) == 28);
+// A primitive as the builder moves it (bvh.h's PrimitiveBox): its box and its id, half a
+// cache line, partitioned in place so that a range's primitives are read in order when
+// binned and partitioned. Arrays rather than glm vectors, whose operator[] is a switch on
+// the axis.
+static_assert(sizeof(PrimitiveBox) == 32 && offsetof(PrimitiveBox, id) == 12 &&
+              offsetof(PrimitiveBox, zero) == 28);
+
+inline Box boxOf(const PrimitiveBox& primitive) {
+    return {{primitive.lo[0], primitive.lo[1], primitive.lo[2]},
+            {primitive.hi[0], primitive.hi[1], primitive.hi[2]}};
+}
+// The same float as 0.5f * (lo + hi) of the input box, whatever the order of the ids.
+inline glm::vec3 centroidOf(const PrimitiveBox& primitive) {
+    const Box box = boxOf(primitive);
+    return 0.5f * (box.lo + box.hi);
+}
+inline float centroidOf(const PrimitiveBox& primitive, int axis) {
+    return 0.5f * (primitive.lo[axis] + primitive.hi[axis]);
+}
+// The box's corners in registers, fourth lanes 0 (the id's bits masked out of lo's; zero
+// is 0).
+inline Float4 lowCorner(const PrimitiveBox& primitive) {
+    Float4 corner;
+    std::memcpy(&corner, &primitive, sizeof corner);
+    return Float4(Int4(corner) & Int4{-1, -1, -1, 0});
+}
+inline Float4 highCorner(const PrimitiveBox& primitive) {
+    Float4 corner;
+    std::memcpy(&corner, primitive.hi, sizeof corner);
+    return corner;
+}
 
 // A bin of the SAH sweep: the boxes of its primitives and of their centroids, and their count.
 struct Bin {

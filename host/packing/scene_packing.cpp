@@ -401,13 +401,8 @@ namespace {
 
 constexpr double kSphereBoxMargin = 1.0 / 1048576.0;
 
-void writeBox(float* box, glm::vec3 lo, glm::vec3 hi) {
-    const float values[6] = {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z};
-    std::copy(values, values + 6, box);
-}
-
-void appendBox(std::vector<float>& boxes, glm::vec3 lo, glm::vec3 hi) {
-    boxes.insert(boxes.end(), {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z});
+PrimitiveBox primitiveBox(glm::vec3 lo, glm::vec3 hi) {
+    return {{lo.x, lo.y, lo.z}, 0, {hi.x, hi.y, hi.z}, 0.0f};
 }
 
 // The nearest float at or below (direction -1) or above (+1) each coordinate: a float box
@@ -420,12 +415,8 @@ glm::vec3 roundOutward(glm::dvec3 v, float direction) {
     return rounded;
 }
 
-void appendBox(std::vector<float>& boxes, glm::dvec3 lo, glm::dvec3 hi) {
-    appendBox(boxes, roundOutward(lo, -1.0f), roundOutward(hi, 1.0f));
-}
-
-void writeBox(float* box, glm::dvec3 lo, glm::dvec3 hi) {
-    writeBox(box, roundOutward(lo, -1.0f), roundOutward(hi, 1.0f));
+PrimitiveBox primitiveBox(glm::dvec3 lo, glm::dvec3 hi) {
+    return primitiveBox(roundOutward(lo, -1.0f), roundOutward(hi, 1.0f));
 }
 
 } // namespace
@@ -502,7 +493,7 @@ namespace {
 
 // The boxes of the given spheres and triangle corners, float (fp32) or double (fp64): the
 // same margins in both, computed in double; a float box is rounded to nearest (the margin
-// covers it), a double one outward to float (appendBox).
+// covers it), a double one outward to float (primitiveBox).
 template <typename Vec4>
 PrimitiveBounds boundsOf(const std::vector<Vec4>& spheres, const std::vector<Vec4>& positions,
                          const std::vector<glm::uvec4>& triangles) {
@@ -514,11 +505,11 @@ PrimitiveBounds boundsOf(const std::vector<Vec4>& spheres, const std::vector<Vec
         double magnitude =
             std::max({std::abs(center.x), std::abs(center.y), std::abs(center.z)}) + sphere.w;
         double reach = double(sphere.w) + kSphereBoxMargin * magnitude;
-        appendBox(bounds.boxes, Vec3(center - reach), Vec3(center + reach));
+        bounds.boxes.push_back(primitiveBox(Vec3(center - reach), Vec3(center + reach)));
     }
     // The triangles' boxes on all threads, each written at its place.
     const std::size_t first = bounds.boxes.size();
-    resizePopulated(bounds.boxes, first + 6 * triangles.size());
+    resizePopulated(bounds.boxes, first + triangles.size());
     const std::vector<IndexRange> blocks = splitRange(triangles.size(), 1 << 16);
     parallelFor(blocks.size(), [&](std::size_t k) {
         for (std::size_t t = blocks[k].begin; t < blocks[k].end; ++t) {
@@ -526,8 +517,8 @@ PrimitiveBounds boundsOf(const std::vector<Vec4>& spheres, const std::vector<Vec
             Vec3 a(positions[triangle.x]);
             Vec3 b(positions[triangle.y]);
             Vec3 c(positions[triangle.z]);
-            writeBox(bounds.boxes.data() + first + 6 * t, glm::min(a, glm::min(b, c)),
-                     glm::max(a, glm::max(b, c)));
+            bounds.boxes[first + t] =
+                primitiveBox(glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c)));
         }
     });
     return bounds;

@@ -430,19 +430,19 @@ TEST(ScenePacking, Fp64KeepsGeometryInDoubleAndItsBoxesHoldIt) {
 
     // Every box, rounded outward to float, holds its primitive's double extent.
     PrimitiveBounds bounds = primitiveBounds(exact);
-    ASSERT_EQ(bounds.boxes.size(), 6u * 3u);
+    ASSERT_EQ(bounds.boxes.size(), 3u);
     const glm::dvec4 sphere = exact.spheres64[0];
     for (int axis = 0; axis < 3; ++axis) {
-        EXPECT_LE(double(bounds.boxes[axis]), sphere[axis] - sphere.w);
-        EXPECT_GE(double(bounds.boxes[3 + axis]), sphere[axis] + sphere.w);
+        EXPECT_LE(double(bounds.boxes[0].lo[axis]), sphere[axis] - sphere.w);
+        EXPECT_GE(double(bounds.boxes[0].hi[axis]), sphere[axis] + sphere.w);
     }
     for (std::size_t t = 0; t < 2; ++t)
         for (std::size_t k = 0; k < 3; ++k) {
             glm::dvec3 p(exact.vertexPositions64[exact.triangles[t][int(k)]]);
-            const float* box = &bounds.boxes[6 * (1 + t)];
+            const PrimitiveBox& box = bounds.boxes[1 + t];
             for (int axis = 0; axis < 3; ++axis) {
-                EXPECT_LE(double(box[axis]), p[axis]);
-                EXPECT_GE(double(box[3 + axis]), p[axis]);
+                EXPECT_LE(double(box.lo[axis]), p[axis]);
+                EXPECT_GE(double(box.hi[axis]), p[axis]);
             }
         }
 }

@@ -16,7 +16,6 @@ namespace {
 using bvh_boxes::Box;
 using bvh_boxes::Box4;
 using bvh_boxes::Float4;
-using bvh_boxes::PrimitiveRef;
 
 std::uint32_t bits(float value) {
     return std::bit_cast<std::uint32_t>(value);
@@ -60,17 +59,17 @@ TEST(BvhBoxes, RegisterBoxesGrowAndMeasureAsBoxDoes) {
 
 TEST(BvhBoxes, APrimitivesRegisterCornersAreItsBoxWithoutItsId) {
     // An id whose bits as a float are a NaN: the masked lane must still read 0.
-    const PrimitiveRef ref{{-1.0f, 2.0f, -0.0f}, 0xffffffffu, {3.0f, 2.0f, 5.0f}, 0.0f};
-    const Float4 lo = ref.lo4(), hi = ref.hi4();
+    const PrimitiveBox ref{{-1.0f, 2.0f, -0.0f}, 0xffffffffu, {3.0f, 2.0f, 5.0f}, 0.0f};
+    const Float4 lo = bvh_boxes::lowCorner(ref), hi = bvh_boxes::highCorner(ref);
     const float expectedLo[4] = {-1.0f, 2.0f, -0.0f, 0.0f};
     const float expectedHi[4] = {3.0f, 2.0f, 5.0f, 0.0f};
     for (int lane = 0; lane < 4; ++lane) {
         EXPECT_EQ(bits(lo[lane]), bits(expectedLo[lane])) << lane;
         EXPECT_EQ(bits(hi[lane]), bits(expectedHi[lane])) << lane;
     }
-    const glm::vec3 centroid = ref.centroid();
+    const glm::vec3 centroid = bvh_boxes::centroidOf(ref);
     for (int axis = 0; axis < 3; ++axis)
-        EXPECT_EQ(bits(ref.centroid(axis)), bits(centroid[axis]));
+        EXPECT_EQ(bits(bvh_boxes::centroidOf(ref, axis)), bits(centroid[axis]));
     EXPECT_EQ(centroid, glm::vec3(1.0f, 2.0f, 2.5f));
 }
 

@@ -49,8 +49,8 @@ bool isLoneLeaf(const Bvh& bvh) {
 }
 
 Box3 inputBox(const PrimitiveBounds& bounds, std::uint32_t id) {
-    const float* b = bounds.boxes.data() + 6 * std::size_t(id);
-    return {{b[0], b[1], b[2]}, {b[3], b[4], b[5]}};
+    const PrimitiveBox& b = bounds.boxes[id];
+    return {{b.lo[0], b.lo[1], b.lo[2]}, {b.hi[0], b.hi[1], b.hi[2]}};
 }
 
 bool contains(const Box3& outer, const Box3& inner) {
@@ -59,7 +59,7 @@ bool contains(const Box3& outer, const Box3& inner) {
 }
 
 void addBox(PrimitiveBounds& bounds, glm::vec3 lo, glm::vec3 hi) {
-    bounds.boxes.insert(bounds.boxes.end(), {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z});
+    bounds.boxes.push_back({{lo.x, lo.y, lo.z}, 0, {hi.x, hi.y, hi.z}, 0.0f});
 }
 
 // Deterministic pseudo-random numbers in [0, 1) (a 32-bit LCG; no seeding from the clock).
@@ -231,7 +231,7 @@ TEST(BvhNode, ReferenceIsWhatTheShaderReads) {
 
 TEST(BvhNode, LeavesLargerThanTheCountFieldAreRefused) {
     PrimitiveBounds bounds;
-    bounds.boxes.assign(6 * 4, 0.0f);
+    bounds.boxes.assign(4, PrimitiveBox{{0.0f, 0.0f, 0.0f}, 0, {0.0f, 0.0f, 0.0f}, 0.0f});
     BvhSettings settings;
     settings.maxLeafSize = BVH_MAX_LEAF_COUNT + 1;
     EXPECT_THROW(buildBvh(bounds, settings), std::invalid_argument);
