@@ -84,20 +84,17 @@ OrderedDedup orderedDedup(std::size_t count, const ValueAt& valueAt) {
     release(hashes);
 
     // The first appearances ranked in sequence order, then every value given its first's.
-    std::vector<std::uint32_t> firstsBefore(blocks.size() + 1, 0);
-    parallelFor(blocks.size(), [&](std::size_t b) {
-        std::uint32_t n = 0;
-        for (std::size_t i = blocks[b].begin; i < blocks[b].end; ++i)
+    const std::vector<std::size_t> firstsBefore = countsBefore(blocks, [&](IndexRange block) {
+        std::size_t n = 0;
+        for (std::size_t i = block.begin; i < block.end; ++i)
             n += first[i] == i;
-        firstsBefore[b + 1] = n;
+        return n;
     });
-    for (std::size_t b = 0; b < blocks.size(); ++b)
-        firstsBefore[b + 1] += firstsBefore[b];
     OrderedDedup result;
     result.indexOf.resize(count);
     result.firstOf.resize(firstsBefore.back());
     parallelFor(blocks.size(), [&](std::size_t b) {
-        std::uint32_t rank = firstsBefore[b];
+        auto rank = std::uint32_t(firstsBefore[b]);
         for (std::size_t i = blocks[b].begin; i < blocks[b].end; ++i)
             if (first[i] == i) {
                 result.firstOf[rank] = std::uint32_t(i);

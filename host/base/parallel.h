@@ -47,6 +47,21 @@ std::vector<IndexRange> splitRange(std::size_t count, std::size_t grain);
 void parallelForRanges(std::size_t count, std::size_t grain,
                        const std::function<void(IndexRange)>& body);
 
+// For each of ranges, how many of the items before it pass: countIn(range) for every range
+// on up to `threads` threads (0: workerThreads()), summed in range order; ranges.size() + 1
+// entries, the last the total. Where each range's passing items go when they are copied out
+// in order on all threads (an ordered compaction).
+template <typename CountIn>
+std::vector<std::size_t> countsBefore(const std::vector<IndexRange>& ranges, const CountIn& countIn,
+                                      unsigned threads = 0) {
+    std::vector<std::size_t> before(ranges.size() + 1, 0);
+    parallelFor(
+        ranges.size(), [&](std::size_t k) { before[k + 1] = countIn(ranges[k]); }, threads);
+    for (std::size_t k = 0; k < ranges.size(); ++k)
+        before[k + 1] += before[k];
+    return before;
+}
+
 // pass(range) for each range of splitRange(count, grain) on all threads, the results then
 // merged in range order, merge(part, into) adding each to the first range's. The ranges
 // depend on the thread count: the result does not when merging is exact in any grouping

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <numeric>
 
 namespace {
 
@@ -116,13 +115,11 @@ Mesh modelMesh(const SourceModel& model, const std::vector<glm::dvec3>& position
     const std::size_t triangles = model.triangles.size();
     // The kept triangles counted by ranges on all threads, for where each range's go.
     const std::vector<IndexRange> triangleRanges = splitRange(triangles, 1 << 16);
-    std::vector<std::size_t> keptBefore(triangleRanges.size() + 1, 0);
-    parallelFor(triangleRanges.size(), [&](std::size_t k) {
-        keptBefore[k + 1] =
-            std::size_t(std::count(fates.begin() + triangleRanges[k].begin,
-                                   fates.begin() + triangleRanges[k].end, TriangleFate::kept));
+    const std::vector<std::size_t> keptBefore = countsBefore(triangleRanges, [&](IndexRange range) {
+        return std::size_t(std::count(fates.begin() + std::ptrdiff_t(range.begin),
+                                      fates.begin() + std::ptrdiff_t(range.end),
+                                      TriangleFate::kept));
     });
-    std::partial_sum(keptBefore.begin(), keptBefore.end(), keptBefore.begin());
     const std::size_t kept = keptBefore.back();
     Mesh mesh;
     reservePopulated(mesh.triangles, kept);

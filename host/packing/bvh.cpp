@@ -34,7 +34,6 @@
 #include <bit>
 #include <cmath>
 #include <cstddef>
-#include <cstring>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
@@ -558,25 +557,24 @@ Bvh buildBvh(PrimitiveBounds input, const BvhSettings& settings) {
     // before it in that order, and a leaf's first slot that of its first primitive.
     // On all threads: each block's spheres counted, then its slots numbered from the counts
     // of the blocks before it.
-    const std::vector<std::uint32_t> blockSpheres = mapBlocks<std::uint32_t>(
-        0, std::uint32_t(n), threads, [&](std::uint32_t from, std::uint32_t to) {
-            std::uint32_t spheres = 0;
-            for (std::uint32_t i = from; i < to; ++i)
+    const std::vector<IndexRange> blocks = passBlocks(0, std::uint32_t(n), threads);
+    const std::vector<std::size_t> spheresBefore = countsBefore(
+        blocks,
+        [&](IndexRange block) {
+            std::size_t spheres = 0;
+            for (std::size_t i = block.begin; i < block.end; ++i)
                 spheres += builder.idAt(i) < sphereCount;
             return spheres;
-        });
-    const std::vector<IndexRange> blocks = passBlocks(0, std::uint32_t(n), threads);
+        },
+        threads);
     std::vector<std::uint32_t> slotAt;
     resizePopulated(slotAt, n);
     bvh.sphereOrder.resize(sphereCount);
     resizePopulated(bvh.triangleOrder, n - sphereCount);
-    std::vector<std::uint32_t> spheresBefore(blocks.size() + 1, 0);
-    for (std::size_t b = 0; b < blocks.size(); ++b)
-        spheresBefore[b + 1] = spheresBefore[b] + blockSpheres[b];
     parallelFor(
         blocks.size(),
         [&](std::size_t b) {
-            std::uint32_t spheres = spheresBefore[b];
+            auto spheres = std::uint32_t(spheresBefore[b]);
             auto triangles = std::uint32_t(blocks[b].begin - spheres);
             for (std::size_t i = blocks[b].begin; i < blocks[b].end; ++i) {
                 const std::uint32_t id = builder.idAt(i);
