@@ -45,18 +45,6 @@ ObjKeyword objKeyword(std::string_view keyword) {
     return ObjKeyword::ignored;
 }
 
-std::optional<ObjKeyword> leadingKeyword(std::string_view line) {
-    if (line.size() >= 2 && isSpace(line[1])) {
-        if (line[0] == 'v') return ObjKeyword::position;
-        if (line[0] == 'f') return ObjKeyword::face;
-    }
-    if (line.size() >= 3 && line[0] == 'v' && isSpace(line[2])) {
-        if (line[1] == 'n') return ObjKeyword::normal;
-        if (line[1] == 't') return ObjKeyword::texcoord;
-    }
-    return std::nullopt;
-}
-
 std::vector<std::size_t> objChunkStarts(std::string_view text, unsigned most,
                                         std::size_t minChunkBytes) {
     if (most == 0) most = kObjChunksPerThread * workerThreads();

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "base/phase_progress.h"
+#include "scene/scene_lexer.h"
 
 #include <cstddef>
 #include <optional>
@@ -20,8 +21,20 @@ ObjKeyword objKeyword(std::string_view keyword);
 
 // The keyword of the common lines, "v ", "vn ", "vt " and "f " (any space after), found from
 // their first characters without splitting them; none for any other line, whose keyword
-// splitStatement finds. Both passes read a line's kind so, and so count the same.
-std::optional<ObjKeyword> leadingKeyword(std::string_view line);
+// splitStatement finds. Both passes read a line's kind so, and so count the same. Inline: a
+// call returning the optional through memory stalled on every line of a large file.
+inline std::optional<ObjKeyword> leadingKeyword(std::string_view line) {
+    using scene_lexer::isSpace;
+    if (line.size() >= 2 && isSpace(line[1])) {
+        if (line[0] == 'v') return ObjKeyword::position;
+        if (line[0] == 'f') return ObjKeyword::face;
+    }
+    if (line.size() >= 3 && line[0] == 'v' && isSpace(line[2])) {
+        if (line[1] == 'n') return ObjKeyword::normal;
+        if (line[1] == 't') return ObjKeyword::texcoord;
+    }
+    return std::nullopt;
+}
 
 struct ObjEvent {
     ObjKeyword kind = ObjKeyword::usemtl; // mtllib, usemtl or ignored

@@ -96,11 +96,13 @@ struct Subtree {
     std::uint32_t depth = 0;
 };
 
-// Room for the interior nodes of a subtree of n primitives, at most n - 1 (its leaves hold
-// one or more each), and for a lone leaf's root: address space, whose pages cost only once
-// written, so that no array of nodes grows by copying itself.
+// Room for the nodes of a subtree of n primitives, so that its array rarely grows by
+// copying itself: at most n + 1 are made (n - 1 interior nodes when every leaf holds one
+// primitive, and a lone leaf's root), far fewer when leaves hold several (a third of n for
+// a smooth mesh). Half of n is reserved: room never written would still be held when a
+// block's pages are kept ones (base/recycled_pages.h).
 void reserveNodes(std::vector<gpu::GpuBvhNode>& nodes, std::uint32_t n) {
-    nodes.reserve(std::size_t(n) + 1);
+    nodes.reserve(std::size_t(n) / 2 + 1);
 }
 
 // [begin, end) as the passes over it are shared: whole when below kParallelPass or built on
@@ -195,8 +197,9 @@ class Builder {
     // Writes the interior nodes of the tree over root depth first to out: on one thread as
     // build does, else in tasks (buildInTasks).
     Subtree buildTree(const Range& root, std::vector<gpu::GpuBvhNode>& out) {
-        if (threads_ < 2) return build(root, 0, out);
-        return buildInTasks(root, out);
+        if (threads_ >= 2) return buildInTasks(root, out);
+        reserveNodes(out, root.size());
+        return build(root, 0, out);
     }
 
     unsigned threads() const { return threads_; }
@@ -267,7 +270,10 @@ class Builder {
     Subtree buildInTasks(const Range& root, std::vector<gpu::GpuBvhNode>& out) {
         const std::uint32_t taskSize =
             std::max(kSmallestTask, root.size() / (kTasksPerThread * threads_));
-        if (root.size() < taskSize) return build(root, 0, out);
+        if (root.size() < taskSize) {
+            reserveNodes(out, root.size());
+            return build(root, 0, out);
+        }
         TopLevels top = splitTopLevels(root, taskSize);
         buildTasks(top.tasks);
         return assemble(top, out);
@@ -540,7 +546,6 @@ Bvh buildBvh(PrimitiveBounds input, const BvhSettings& settings) {
         throw std::invalid_argument("buildBvh: " + std::to_string(n) +
                                     " primitives cannot fit in " +
                                     std::to_string(settings.maxDepth) + " levels");
-    reserveNodes(bvh.nodes, std::uint32_t(n));
     const Subtree tree = builder.buildTree(root, bvh.nodes);
     bvh.depth = tree.depth;
     if (tree.child.leaf) {

@@ -3,6 +3,7 @@
 #include "base/notes.h"
 #include "base/parallel.h"
 #include "base/populated_memory.h"
+#include "base/recycled_pages.h"
 #include "base/release.h"
 #include "base/scope_guard.h"
 #include "base/startup_phases.h"
@@ -313,6 +314,9 @@ void createRendererFrom(Renderer& renderer, const Context& context, const Scene&
                 loadTracePipeline(context, source, renderer.specialization, precision);
         }
     };
+    // The driver's memory for the scene does not come from the recycled pages: freed pages
+    // kept from here on would only add to it.
+    const PagesGivenBack givenBack;
     // The kernel compiles on a second thread while the scene uploads (the two phases' times
     // overlap), for the texel reads asked for; one after the other with --threads 1.
     parallelFor(2, [&](std::size_t part) {
