@@ -7,15 +7,48 @@
 #include <algorithm>
 #include <set>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 using scene_lexer::isSpace;
 
 namespace {
 
-// The words of a logical line before any '#'.
+// The bits set in a 16-bit mask, in registers: std::popcount is a library call where the
+// machine's baseline has no POPCNT instruction (x86-64's has not).
+std::size_t bitsSet16(unsigned mask) {
+    mask -= (mask >> 1) & 0x5555u;
+    mask = (mask & 0x3333u) + ((mask >> 2) & 0x3333u);
+    mask = (mask + (mask >> 4)) & 0x0F0Fu;
+    return (mask + (mask >> 8)) & 0x1Fu;
+}
+
+// The words of a logical line before any '#'. A model's face lines are most of its bytes:
+// sixteen of them at a time where the machine has SSE2 (every x86-64), each a bit of a
+// mask, a word's first byte being a word byte after a space.
 std::size_t countWords(std::string_view text) {
     std::size_t words = 0;
     bool inWord = false;
-    for (const char c : text) {
+    std::size_t i = 0;
+#if defined(__SSE2__)
+    const __m128i blank = _mm_set1_epi8(' '), tab = _mm_set1_epi8('\t'), four = _mm_set1_epi8(4),
+                  hash = _mm_set1_epi8('#');
+    for (; i + 16 <= text.size(); i += 16) {
+        const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(text.data() + i));
+        const __m128i control = _mm_sub_epi8(bytes, tab); // \t \n \v \f \r: 0 to 4
+        const __m128i space = _mm_or_si128(_mm_cmpeq_epi8(bytes, blank),
+                                           _mm_cmpeq_epi8(_mm_min_epu8(control, four), control));
+        unsigned wordBytes = ~unsigned(_mm_movemask_epi8(space)) & 0xFFFFu;
+        const auto hashes = unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(bytes, hash)));
+        if (hashes != 0) wordBytes &= (hashes & (0u - hashes)) - 1; // the bytes before it
+        words += bitsSet16(wordBytes & ~((wordBytes << 1) | unsigned(inWord)));
+        if (hashes != 0) return words;
+        inWord = (wordBytes >> 15) != 0;
+    }
+#endif
+    for (; i < text.size(); ++i) {
+        const char c = text[i];
         if (c == '#') break;
         const bool space = isSpace(c);
         words += !space && !inWord;

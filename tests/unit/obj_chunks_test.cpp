@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -102,6 +103,32 @@ TEST(ObjChunks, IndicesCountBackAcrossChunks) {
     EXPECT_NE(whole.find(" 61@122m0"), std::string::npos) << whole;
     for (unsigned chunks = 2; chunks <= 9; ++chunks)
         EXPECT_EQ(outcome(text, chunks), whole) << chunks << " chunks";
+}
+
+TEST(ObjChunks, TheSurveyCountsAFacesWordsAsThePlainDefinitionDoes) {
+    // Lines of every length around the sixteen bytes the survey reads at once, of words,
+    // each whitespace byte, '#' anywhere and bytes above 127; each a face whose corners
+    // are the words after "f" before any '#'.
+    std::mt19937 random(7);
+    const std::string alphabet = std::string(" \t\v\f\r#1/a") + char(0x80) + char(0xFF) + "  11";
+    for (int round = 0; round < 3000; ++round) {
+        std::string line = "f ";
+        const int length = int(random() % 70);
+        for (int i = 0; i < length; ++i)
+            line += alphabet[random() % alphabet.size()];
+        std::size_t words = 0;
+        bool inWord = false;
+        for (const char c : line) {
+            if (c == '#') break;
+            const bool space = c == ' ' || (c >= '\t' && c <= '\r');
+            words += !space && !inWord;
+            inWord = !space;
+        }
+        if (line.find('\r') != std::string::npos) continue; // a line end of its own
+        const ObjChunkSurvey survey = surveyObjChunk(line + "\n", nullptr);
+        ASSERT_EQ(survey.faces, 1u) << line;
+        EXPECT_EQ(survey.facePositions, words - 1) << '"' << line << '"';
+    }
 }
 
 } // namespace
