@@ -32,7 +32,8 @@ void parallelFor(std::size_t count, const std::function<void(std::size_t)>& body
 void parallelForPerThread(std::size_t count, const std::function<IndexBody()>& makeBody,
                           unsigned threads) {
     if (threads == 0) threads = workerThreads();
-    const std::size_t workers = std::min<std::size_t>(threads, count);
+    static const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+    const std::size_t workers = std::min<std::size_t>(std::min(threads, hardware), count);
     if (workers <= 1) {
         if (count == 0) return;
         const IndexBody body = makeBody();

@@ -17,7 +17,10 @@ unsigned workerThreads();
 void setWorkerThreads(unsigned threads);
 
 // Calls body(i) for every i in [0, count) on up to `threads` threads at once (the calling
-// thread among them; 0: workerThreads()) and returns when every call has returned. After
+// thread among them; 0: workerThreads()), and never on more than the hardware's threads:
+// more only take turns on its cores (16 on 2 read an OBJ file 15% slower than 2), while
+// the work's split (an OBJ file's chunks, a hierarchy's tasks) still follows the count
+// asked. Returns when every call has returned. After
 // a call throws, no further index is handed out; the exception of the lowest index that
 // threw is rethrown once all threads have stopped. Where a thread cannot be started the
 // ones running share the work.

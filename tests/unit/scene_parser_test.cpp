@@ -742,14 +742,14 @@ TEST(SceneNumbers, FastPathMatchesFromCharsBitForBit) {
 
 // ------------------------------------------------------------ binary check
 
-// The eight-bytes-at-a-time scan must flag exactly what the byte-by-byte rule flags,
-// at every offset within and across words.
+// The sixteen- and eight-bytes-at-a-time scans must flag exactly what the byte-by-byte
+// rule flags, at every offset within and across blocks.
 TEST(SceneText, BinaryCheckFindsEveryByteAtEveryOffset) {
     for (int byte = 0; byte < 256; ++byte) {
         const char c = char(byte);
         const bool text = (byte >= 0x20 && byte < 0x7F) || scene_lexer::isSpace(c);
-        for (std::size_t at = 0; at < 20; ++at) {
-            std::string sample(20, 'a');
+        for (std::size_t at = 0; at < 44; ++at) {
+            std::string sample(44, 'a');
             sample[at] = c;
             const auto reason = scene_lexer::binaryReason(sample);
             std::string expected;
