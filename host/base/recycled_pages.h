@@ -5,8 +5,11 @@
 // here keeps its pages; the next block takes them, moved into place by mremap (page-table
 // entries change hands: no copy, no fault), and only what they do not cover is new memory.
 // The pages held never exceed the largest total of live blocks so far (a block takes kept
-// pages before new ones), so the peak is the same; but they stay held until
-// trimRecycledPages. Blocks come zeroed only where their pages are new.
+// pages before new ones), so the peak is the same, provided that the large memory of the
+// time comes from here (PagesGivenBack where it does not) and that a block's room is
+// written, not merely reserved (kept pages are held whether written or not). They stay
+// held until trimRecycledPages or a PagesGivenBack. Blocks come zeroed only where their
+// pages are new.
 #pragma once
 
 #include <cstddef>
