@@ -32,13 +32,11 @@ std::size_t countWords(std::string_view text) {
     bool inWord = false;
     std::size_t i = 0;
 #if defined(__SSE2__)
-    const __m128i blank = _mm_set1_epi8(' '), tab = _mm_set1_epi8('\t'), four = _mm_set1_epi8(4),
-                  hash = _mm_set1_epi8('#');
+    const __m128i blank = _mm_set1_epi8(' '), hash = _mm_set1_epi8('#');
     for (; i + 16 <= text.size(); i += 16) {
         const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(text.data() + i));
-        const __m128i control = _mm_sub_epi8(bytes, tab); // \t \n \v \f \r: 0 to 4
-        const __m128i space = _mm_or_si128(_mm_cmpeq_epi8(bytes, blank),
-                                           _mm_cmpeq_epi8(_mm_min_epu8(control, four), control));
+        const __m128i space =
+            _mm_or_si128(_mm_cmpeq_epi8(bytes, blank), scene_lexer::whitespaceControls16(bytes));
         unsigned wordBytes = ~unsigned(_mm_movemask_epi8(space)) & 0xFFFFu;
         const auto hashes = unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(bytes, hash)));
         if (hashes != 0) wordBytes &= (hashes & (0u - hashes)) - 1; // the bytes before it

@@ -9,10 +9,6 @@
 #include <cstring>
 #include <system_error>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 namespace scene_lexer {
 namespace {
 
@@ -161,8 +157,7 @@ bool plainBytes16(const char* p) {
     const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
     // Below 0x20 as signed bytes: the controls, and every byte >= 0x80.
     const __m128i low = _mm_cmplt_epi8(bytes, _mm_set1_epi8(0x20));
-    const __m128i control = _mm_sub_epi8(bytes, _mm_set1_epi8('\t')); // \t..\r: 0 to 4
-    const __m128i space = _mm_cmpeq_epi8(_mm_min_epu8(control, _mm_set1_epi8(4)), control);
+    const __m128i space = whitespaceControls16(bytes);
     const __m128i del = _mm_cmpeq_epi8(bytes, _mm_set1_epi8(0x7F));
     return _mm_movemask_epi8(_mm_or_si128(_mm_andnot_si128(space, low), del)) == 0;
 }
