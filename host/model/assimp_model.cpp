@@ -186,6 +186,7 @@ SourceModel readInThisProcess(std::string_view bytes, const std::filesystem::pat
             if (face.mNumIndices < 3) continue;
             std::vector<SourceCorner> corners;
             std::vector<glm::dvec3> points;
+            std::vector<std::uint32_t> cornerPositions;
             for (unsigned k = 0; k < face.mNumIndices; ++k) {
                 const unsigned v = face.mIndices[k];
                 SourceCorner corner;
@@ -194,10 +195,9 @@ SourceModel readInThisProcess(std::string_view bytes, const std::filesystem::pat
                 if (texcoords) corner.texcoord = texcoordBase + v;
                 corners.push_back(corner);
                 points.push_back(model.positions[corner.position]);
-                model.facePositions.push_back(corner.position);
+                cornerPositions.push_back(corner.position);
             }
-            model.faceStarts.push_back(model.facePositions.size());
-            const auto faceIndex = static_cast<std::uint32_t>(faceCount(model) - 1);
+            const std::uint32_t faceIndex = addFace(model, cornerPositions);
             if (corners.size() == 3) {
                 model.triangles.push_back(
                     {{corners[0], corners[1], corners[2]}, material, faceIndex, 0});

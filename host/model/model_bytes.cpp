@@ -82,6 +82,7 @@ std::string modelBytes(const SourceModel& model) {
     out.array(model.texcoords);
     out.array(model.facePositions);
     out.array(model.faceStarts);
+    out.value<std::uint8_t>(model.triangles.facesAreTriangles());
     out.value<std::uint64_t>(model.triangles.size());
     for (std::size_t t = 0; t < model.triangles.size(); ++t)
         out.value(model.triangles[t]);
@@ -118,10 +119,14 @@ SourceModel modelFromBytes(std::string_view bytes) {
     model.texcoords = in.array<glm::dvec2>();
     model.facePositions = in.array<std::uint32_t>();
     model.faceStarts = in.array<std::size_t>();
+    if (in.value<std::uint8_t>() != 0) model.triangles.makeFacesTheTriangles();
     const std::uint64_t triangles = in.count(sizeof(SourceTriangle));
     model.triangles.reserve(triangles);
-    for (std::uint64_t t = 0; t < triangles; ++t)
-        model.triangles.push_back(in.value<SourceTriangle>());
+    for (std::uint64_t t = 0; t < triangles; ++t) {
+        const auto triangle = in.value<SourceTriangle>();
+        check(!model.triangles.facesAreTriangles() || triangle.face == t);
+        model.triangles.push_back(triangle);
+    }
     model.materials.resize(in.count(sizeof(Material) + 8 + 2 * sizeof(glm::dvec3)));
     for (MeshMaterial& material : model.materials) {
         material.phong = in.value<Material>();
@@ -148,6 +153,7 @@ SourceModel modelFromBytes(std::string_view bytes) {
           (model.colors.empty() || model.colors.size() == model.positions.size()));
     check(!model.faceStarts.empty() && model.faceStarts.front() == 0 &&
           model.faceStarts.back() == model.facePositions.size());
+    check(!model.triangles.facesAreTriangles() || model.faceStarts.size() == 1);
     for (std::size_t i = 1; i < model.faceStarts.size(); ++i)
         check(model.faceStarts[i - 1] <= model.faceStarts[i]);
     for (const std::uint32_t p : model.facePositions)
@@ -158,7 +164,7 @@ SourceModel modelFromBytes(std::string_view bytes) {
             check(corner.position < model.positions.size() &&
                   (corner.normal == kNoNormal || corner.normal < model.normals.size()) &&
                   (corner.texcoord == kNoTexcoord || corner.texcoord < model.texcoords.size()));
-        check(t.material < model.materials.size() && t.face + 1 < model.faceStarts.size());
+        check(t.material < model.materials.size() && t.face < faceCount(model));
     }
     return model;
 }

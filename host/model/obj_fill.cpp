@@ -217,10 +217,14 @@ class ChunkReader {
         expectRoom(next_.faces, end_.faces);
         expectRoom(next_.facePositions + n - 1, end_.facePositions);
         expectRoom(next_.triangles + n - 3, end_.triangles);
-        for (const SourceCorner& corner : corners_)
-            model_.facePositions[next_.facePositions++] = corner.position;
         const auto face = static_cast<std::uint32_t>(next_.faces++);
-        model_.faceStarts[face + 1] = next_.facePositions;
+        if (!model_.triangles.facesAreTriangles()) { // else triangle `face` holds them
+            for (const SourceCorner& corner : corners_)
+                model_.facePositions[next_.facePositions++] = corner.position;
+            model_.faceStarts[face + 1] = next_.facePositions;
+        } else if (n != 3) {
+            throw std::logic_error("OBJ reader: a polygon where the survey found triangles only");
+        }
         if (n == 3) { // the common case, without a polygon's work
             model_.triangles.set(next_.triangles++,
                                  {{corners_[0], corners_[1], corners_[2]}, material_, face, line});

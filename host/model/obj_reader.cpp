@@ -95,14 +95,18 @@ MaterialReplay replayMaterials(const std::vector<ObjChunkSurvey>& surveys,
 }
 
 // Every array step 3 writes, at the sizes the surveys add up to, their pages mapped on all
-// threads.
-void sizeArrays(SourceModel& model, const ObjChunkPlace& total) {
+// threads; the faces' own arrays only when some face is not a triangle.
+void sizeArrays(SourceModel& model, const ObjChunkPlace& total, bool onlyTriangles) {
     resizePopulated(model.positions, total.positions);
     resizePopulated(model.positionLines, total.positions);
     resizePopulated(model.normals, total.normals);
     resizePopulated(model.texcoords, total.texcoords);
-    resizePopulated(model.facePositions, total.facePositions);
-    resizePopulated(model.faceStarts, total.faces + 1);
+    if (onlyTriangles) {
+        model.triangles.makeFacesTheTriangles();
+    } else {
+        resizePopulated(model.facePositions, total.facePositions);
+        resizePopulated(model.faceStarts, total.faces + 1);
+    }
     // A corner may name a normal (texture coordinates) only when the file has some.
     model.triangles.resize(total.triangles, total.normals > 0, total.texcoords > 0);
 }
@@ -165,7 +169,9 @@ SourceModel parseObj(std::string_view text, const std::string& fileName, const M
 
     SourceModel model;
     model.materials.push_back(defaultModelMaterial());
-    sizeArrays(model, places.back());
+    const bool onlyTriangles = std::all_of(surveys.begin(), surveys.end(),
+                                           [](const ObjChunkSurvey& s) { return s.polygons == 0; });
+    sizeArrays(model, places.back(), onlyTriangles);
     const MaterialReplay replay = replayMaterials(surveys, places, fileName, lookUpMtl, model);
     surveys.clear();
 

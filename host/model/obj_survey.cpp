@@ -58,6 +58,7 @@ std::size_t countWords(std::string_view text) {
 void countFace(ObjChunkSurvey& survey, std::size_t corners) {
     ++survey.faces;
     survey.facePositions += corners;
+    survey.polygons += corners != 3;
     survey.triangles += corners >= 3 ? corners - 2 : 0; // fewer is an error in the second pass
 }
 

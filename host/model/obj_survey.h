@@ -48,6 +48,7 @@ struct ObjChunkSurvey {
     int lines = 0; // physical lines
     std::size_t positions = 0, normals = 0, texcoords = 0;
     std::size_t faces = 0, facePositions = 0, triangles = 0;
+    std::size_t polygons = 0;     // faces of other than three corners
     std::vector<ObjEvent> events; // an ignored keyword only where the chunk first has it
 };
 

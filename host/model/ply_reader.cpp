@@ -366,10 +366,7 @@ struct PlyReading {
 
 void addFace(PlyReading& reading, std::span<const std::uint32_t> corners) {
     SourceModel& model = reading.model;
-    for (const std::uint32_t p : corners)
-        model.facePositions.push_back(p);
-    model.faceStarts.push_back(model.facePositions.size());
-    const auto face = static_cast<std::uint32_t>(faceCount(model) - 1);
+    const std::uint32_t face = addFace(model, corners);
     auto corner = [&](std::uint32_t p) {
         SourceCorner c;
         c.position = p;

@@ -96,7 +96,7 @@ SmoothNormals::SmoothNormals(const SourceModel& model, const std::vector<glm::dv
         }
     });
     // The faces around each position, each face once though its position repeats in it.
-    facesAt_ = keyedLists(positions.size(), faces, model.facePositions.size(),
+    facesAt_ = keyedLists(positions.size(), faces, facePositionCount(model),
                           [&](std::size_t f, const auto& visit) {
                               if (leftOut.empty() || !leftOut[f])
                                   visitEachOnce(facePositions(model, f), visit);

@@ -6,6 +6,8 @@
 #include "model/source_triangles.h"
 #include "scene/scene.h"
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -23,7 +25,9 @@ struct SourceModel {
     std::vector<glm::dvec2> texcoords; // vt's u and v (a third value, w, is not kept)
     // Each face's position indices, whole (smooth normals are taken per polygon): face f's
     // are facePositions[faceStarts[f]] up to facePositions[faceStarts[f + 1]], in one array
-    // rather than a vector per face (which cost 56 bytes a face before its indices).
+    // rather than a vector per face (which cost 56 bytes a face before its indices). Both
+    // left as they start when each face is its triangle (triangles.facesAreTriangles()):
+    // face f's positions are then triangle f's.
     std::vector<std::uint32_t> facePositions;
     std::vector<std::size_t> faceStarts{0};
     SourceTriangles triangles;
@@ -41,11 +45,25 @@ struct SourceModel {
 };
 
 inline std::size_t faceCount(const SourceModel& model) {
-    return model.faceStarts.size() - 1;
+    return model.triangles.facesAreTriangles() ? model.triangles.size()
+                                               : model.faceStarts.size() - 1;
 }
 inline std::span<const std::uint32_t> facePositions(const SourceModel& model, std::size_t face) {
+    if (model.triangles.facesAreTriangles())
+        return std::span<const std::uint32_t>(glm::value_ptr(model.triangles.positions(face)), 3);
     return std::span<const std::uint32_t>(model.facePositions)
         .subspan(model.faceStarts[face], model.faceStarts[face + 1] - model.faceStarts[face]);
+}
+// A face of these positions, for the readers that add faces one by one: its index, for its
+// triangles, pushed next. A face of three corners must be pushed as its one triangle. The
+// faces are the triangles (SourceTriangles::makeFacesTheTriangles) while every face has
+// three corners; the first that has not lists the faces so far and keeps listing them.
+std::uint32_t addFace(SourceModel& model, std::span<const std::uint32_t> positions);
+
+// The number of position indices all faces hold together.
+inline std::size_t facePositionCount(const SourceModel& model) {
+    return model.triangles.facesAreTriangles() ? 3 * model.triangles.size()
+                                               : model.facePositions.size();
 }
 
 // The material of faces that name none, or one that no material library defines, and what

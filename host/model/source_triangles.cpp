@@ -1,8 +1,11 @@
 #include "model/source_triangles.h"
 
 #include "base/populated_memory.h"
+#include "base/release.h"
 
+#include <numeric>
 #include <stdexcept>
+#include <string>
 
 namespace {
 
@@ -29,10 +32,30 @@ glm::uvec3 texcoordsOf(const SourceTriangle& triangle) {
 
 } // namespace
 
+void SourceTriangles::makeFacesTheTriangles() {
+    if (!positions_.empty())
+        throw std::logic_error("SourceTriangles::makeFacesTheTriangles: triangles are there");
+    facesAreTriangles_ = true;
+    release(faces_);
+}
+
+void SourceTriangles::keepFaceIndices() {
+    if (!facesAreTriangles_) return;
+    faces_.resize(positions_.size());
+    std::iota(faces_.begin(), faces_.end(), std::uint32_t(0));
+    facesAreTriangles_ = false;
+}
+
+void SourceTriangles::expectOwnFace(std::size_t t, std::uint32_t face) const {
+    if (facesAreTriangles_ && face != t)
+        throw std::logic_error("SourceTriangles: triangle " + std::to_string(t) + " is not face " +
+                               std::to_string(face) + ", but each face is its triangle");
+}
+
 void SourceTriangles::resize(std::size_t n, bool normals, bool texcoords) {
     resizePopulated(positions_, n);
     resizePopulated(materials_, n);
-    resizePopulated(faces_, n);
+    if (!facesAreTriangles_) resizePopulated(faces_, n);
     resizePopulated(lines_, n);
     withNormals_ = normals;
     withTexcoords_ = texcoords;
@@ -41,10 +64,11 @@ void SourceTriangles::resize(std::size_t n, bool normals, bool texcoords) {
 }
 
 void SourceTriangles::set(std::size_t t, const SourceTriangle& triangle) {
+    expectOwnFace(t, triangle.face);
     const SourceCorner* corners = triangle.corners;
     positions_[t] = {corners[0].position, corners[1].position, corners[2].position};
     materials_[t] = triangle.material;
-    faces_[t] = triangle.face;
+    if (!facesAreTriangles_) faces_[t] = triangle.face;
     lines_[t] = triangle.line;
     if (withNormals_)
         normals_[t] = normalsOf(triangle);
@@ -59,6 +83,7 @@ void SourceTriangles::set(std::size_t t, const SourceTriangle& triangle) {
 
 void SourceTriangles::push_back(const SourceTriangle& triangle) {
     const std::size_t before = positions_.size();
+    expectOwnFace(before, triangle.face);
     if (!withNormals_ && hasNormal(triangle)) {
         normals_.assign(before, glm::uvec3(kNoNormal));
         withNormals_ = true;
@@ -70,7 +95,7 @@ void SourceTriangles::push_back(const SourceTriangle& triangle) {
     const SourceCorner* corners = triangle.corners;
     positions_.push_back({corners[0].position, corners[1].position, corners[2].position});
     materials_.push_back(triangle.material);
-    faces_.push_back(triangle.face);
+    if (!facesAreTriangles_) faces_.push_back(triangle.face);
     lines_.push_back(triangle.line);
     if (withNormals_) normals_.push_back(normalsOf(triangle));
     if (withTexcoords_) texcoords_.push_back(texcoordsOf(triangle));
@@ -79,6 +104,6 @@ void SourceTriangles::push_back(const SourceTriangle& triangle) {
 void SourceTriangles::reserve(std::size_t n) {
     positions_.reserve(n);
     materials_.reserve(n);
-    faces_.reserve(n);
+    if (!facesAreTriangles_) faces_.reserve(n);
     lines_.reserve(n);
 }

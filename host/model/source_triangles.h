@@ -42,7 +42,7 @@ class SourceTriangles {
         for (int c = 0; c < 3; ++c)
             triangle.corners[c] = corner(t, c);
         triangle.material = materials_[t];
-        triangle.face = faces_[t];
+        triangle.face = face(t);
         triangle.line = lines_[t];
         return triangle;
     }
@@ -52,11 +52,23 @@ class SourceTriangles {
     }
     const glm::uvec3& positions(std::size_t t) const { return positions_[t]; }
     std::uint32_t material(std::size_t t) const { return materials_[t]; }
-    std::uint32_t face(std::size_t t) const { return faces_[t]; }
+    std::uint32_t face(std::size_t t) const {
+        return facesAreTriangles_ ? static_cast<std::uint32_t>(t) : faces_[t];
+    }
     std::int64_t line(std::size_t t) const { return lines_[t]; }
     // Whether the triangles hold normals (texture coordinates): else no corner has one.
     bool anyNormal() const { return withNormals_; }
     bool anyTexcoord() const { return withTexcoords_; }
+    // Whether triangle t is face t, each face a triangle of its own (no face array kept).
+    bool facesAreTriangles() const { return facesAreTriangles_; }
+
+    // From the first triangle on, triangle t is face t: what most large models are (every
+    // face of three corners), 4 bytes a triangle not kept here and 20 not in SourceModel's
+    // faces. Only before any triangle; set and push_back then take only such triangles.
+    void makeFacesTheTriangles();
+    // From now on each triangle keeps its face's index, the faces so far being their
+    // triangles (face(t) stays t for those).
+    void keepFaceIndices();
 
     // n triangles to be set, their pages mapped on all threads; with normals (texcoords)
     // when some may have one.
@@ -69,9 +81,12 @@ class SourceTriangles {
     void reserve(std::size_t n);
 
   private:
-    bool withNormals_ = false, withTexcoords_ = false;
+    // A logic error if each face is its triangle and face is not t.
+    void expectOwnFace(std::size_t t, std::uint32_t face) const;
+
+    bool withNormals_ = false, withTexcoords_ = false, facesAreTriangles_ = false;
     std::vector<glm::uvec3> positions_;
-    std::vector<glm::uvec3> normals_, texcoords_; // kNoNormal, kNoTexcoord: a corner without
-    std::vector<std::uint32_t> materials_, faces_;
+    std::vector<glm::uvec3> normals_, texcoords_;  // kNoNormal, kNoTexcoord: a corner without
+    std::vector<std::uint32_t> materials_, faces_; // faces_: empty if facesAreTriangles_
     std::vector<std::int64_t> lines_;
 };

@@ -12,10 +12,7 @@
 namespace {
 
 void addTriangle(SourceModel& model, const std::uint32_t corners[3], std::int64_t line) {
-    for (int k = 0; k < 3; ++k)
-        model.facePositions.push_back(corners[k]);
-    model.faceStarts.push_back(model.facePositions.size());
-    const auto face = static_cast<std::uint32_t>(faceCount(model) - 1);
+    const std::uint32_t face = addFace(model, std::span<const std::uint32_t>(corners, 3));
     auto corner = [](std::uint32_t position) {
         return SourceCorner{position, kNoNormal, kNoTexcoord};
     };

@@ -171,3 +171,36 @@ TEST(Mesh, PackingAMeshEqualsPackingItsTrianglesPerVertex) {
     cube.spheres.push_back(Sphere{{0, 3, -6}, 0.5, {}, 9});
     expectSamePackingAsPerVertex(cube);
 }
+
+TEST(Mesh, AModelWhoseFacesAreItsTrianglesGivesTheSceneOfOneThatListsThem) {
+    // The cube in triangles, read with its faces in its triangles (no face arrays), and the
+    // same model with them listed: smooth normals everywhere (each position's faces averaged)
+    // and the default crease give the same scene, to the byte.
+    const std::string triangles = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                  "v 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                                  "f 1 4 3\nf 1 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\n"
+                                  "f 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n";
+    const SourceModel own = parseObj(triangles, "model.obj", [](const std::string& name) {
+        return MtlFile{name, std::nullopt};
+    });
+    ASSERT_TRUE(own.triangles.facesAreTriangles());
+    SourceModel listed = own;
+    listed.triangles = SourceTriangles{};
+    for (std::size_t t = 0; t < own.triangles.size(); ++t) {
+        listed.triangles.push_back(own.triangles[t]);
+        for (int c = 0; c < 3; ++c)
+            listed.facePositions.push_back(own.triangles.positions(t)[c]);
+        listed.faceStarts.push_back(listed.facePositions.size());
+    }
+    ASSERT_FALSE(listed.triangles.facesAreTriangles());
+    ASSERT_EQ(faceCount(listed), 12u);
+    for (const double crease : {60.0, 180.0}) {
+        ModelSceneSetup setup;
+        setup.creaseDegrees = crease;
+        const Scene a = sceneFromModel(own, setup, "model.obj"),
+                    b = sceneFromModel(listed, setup, "model.obj");
+        EXPECT_EQ(a.meshes[0].positions.size(), crease == 180.0 ? 8u : 24u);
+        expectSamePacking(packScene(a, Acceleration::Bvh, Precision::Fp32),
+                          packScene(b, Acceleration::Bvh, Precision::Fp32));
+    }
+}

@@ -1,9 +1,11 @@
 // Model and scene files as users' files are: another format behind the expected name is
 // named by its first bytes (PLY, STL, glTF, UTF-16 text), a material library that is
-// missing is one warning that says how many faces fell back to the default material, and
-// a concave face is split by ear clipping (its area kept, its holes open).
+// missing is one warning that says how many faces fell back to the default material, a
+// concave face is split by ear clipping (its area kept, its holes open), and a model's faces
+// are kept in its triangles until a face is not a triangle.
 #include "model/model_bytes.h"
 #include "model/obj_reader.h"
+#include "model/ply_reader.h"
 #include "model/polygon_triangulation.h"
 #include "scene/file_format.h"
 #include "scene/scene_error.h"
@@ -16,8 +18,10 @@
 #include <cstdint>
 #include <cstring>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace {
 
@@ -297,5 +301,55 @@ TEST(SourceTriangles, NormalsAndTexcoordsAppearWithTheFirstCornerThatHasOne) {
         EXPECT_EQ(third.corners[2].texcoord, kNoTexcoord);
         EXPECT_EQ(second.face, 1u);
         EXPECT_EQ(third.line, 9);
+    }
+}
+
+namespace {
+
+// Each face's positions, "a,b,c" and " | " between faces.
+std::string facesOf(const SourceModel& model) {
+    std::string words;
+    for (std::size_t f = 0; f < faceCount(model); ++f) {
+        const std::span<const std::uint32_t> corners = facePositions(model, f);
+        for (std::size_t c = 0; c < corners.size(); ++c)
+            words += (c > 0 ? "," : f > 0 ? " | " : "") + std::to_string(corners[c]);
+    }
+    return words;
+}
+
+std::string asciiPly(const std::string& faces, int faceCount) {
+    return "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+           "property float z\nelement face " +
+           std::to_string(faceCount) +
+           "\nproperty list uchar int vertex_indices\nend_header\n"
+           "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n" +
+           faces;
+}
+
+} // namespace
+
+// Readers that add faces one by one keep them in the triangles while every face is a
+// triangle, and list them all, the earlier ones too, from the first that is not.
+TEST(SourceTriangles, FacesAreTheTrianglesUntilThePolygon) {
+    const SourceModel triangles = readPly(asciiPly("3 0 1 2\n3 0 2 3\n3 0 3 4\n", 3), "m.ply");
+    EXPECT_TRUE(triangles.triangles.facesAreTriangles());
+    EXPECT_TRUE(triangles.facePositions.empty());
+    EXPECT_EQ(facesOf(triangles), "0,1,2 | 0,2,3 | 0,3,4");
+
+    const SourceModel polygon =
+        readPly(asciiPly("3 0 1 2\n3 0 2 3\n4 0 1 2 3\n3 0 3 4\n", 4), "m.ply");
+    EXPECT_FALSE(polygon.triangles.facesAreTriangles());
+    EXPECT_EQ(facesOf(polygon), "0,1,2 | 0,2,3 | 0,1,2,3 | 0,3,4");
+    ASSERT_EQ(polygon.triangles.size(), 5u);
+    std::vector<std::uint32_t> faces;
+    for (std::size_t t = 0; t < 5; ++t)
+        faces.push_back(polygon.triangles.face(t));
+    EXPECT_EQ(faces, (std::vector<std::uint32_t>{0, 1, 2, 2, 3}));
+
+    // Across a child process too (model_bytes.h), either way.
+    for (const SourceModel* model : {&triangles, &polygon}) {
+        const SourceModel crossed = modelFromBytes(modelBytes(*model));
+        EXPECT_EQ(crossed.triangles.facesAreTriangles(), model->triangles.facesAreTriangles());
+        EXPECT_EQ(facesOf(crossed), facesOf(*model));
     }
 }

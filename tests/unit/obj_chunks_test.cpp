@@ -8,7 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <random>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,6 +34,12 @@ std::string outcome(const std::string& text, unsigned chunks) {
             words += " " + std::to_string(model.triangles.positions(t)[2]) + "@" +
                      std::to_string(model.triangles.line(t)) + "m" +
                      std::to_string(model.triangles.material(t));
+        words += model.triangles.facesAreTriangles() ? "\nfaces: the triangles" : "\nfaces:";
+        for (std::size_t f = 0; f < faceCount(model); ++f) {
+            words += " ";
+            for (const std::uint32_t p : facePositions(model, f))
+                words += std::to_string(p) + ",";
+        }
         for (const std::string& warning : model.warnings)
             words += "\n" + warning;
         return words;
@@ -87,6 +95,8 @@ TEST(ObjChunks, TheFirstErrorInFileOrderWinsWhereverItIs) {
         {triangles(30, 5, "f 1 2 999") + "mtllib bad.mtl\n", "m.obj:5: error: vertex index 999"},
         {triangles(30, 7, "v 1 2") + "f 0 1 2\n", "m.obj:7: error: v expects 3"},
         {triangles(30, 57, "vn 1 2 x"), "m.obj:57: error: vn: 'x' is not a number"},
+        // As many corners as triangles would have, but in a face of two and one of four.
+        {triangles(30, 9, "f 1 2") + "f 1 2 3 4\n", "m.obj:9: error: a face needs at least 3"},
     };
     for (const auto& [text, expected] : cases) {
         const std::string whole = outcome(text, 1);
@@ -103,6 +113,34 @@ TEST(ObjChunks, IndicesCountBackAcrossChunks) {
     EXPECT_NE(whole.find(" 61@122m0"), std::string::npos) << whole;
     for (unsigned chunks = 2; chunks <= 9; ++chunks)
         EXPECT_EQ(outcome(text, chunks), whole) << chunks << " chunks";
+}
+
+TEST(ObjChunks, FacesOfThreeCornersAreTheirTrianglesInEveryChunk) {
+    // Every face a triangle: the model keeps no face arrays, and face f is triangle f (the
+    // face list above is read through them). One quad anywhere, and the faces are kept.
+    const std::string text = triangles(60);
+    const SourceModel model = parseObj(text, "m.obj", lookUp, ObjParseOptions{4, 1});
+    EXPECT_TRUE(model.triangles.facesAreTriangles());
+    EXPECT_TRUE(model.facePositions.empty());
+    EXPECT_EQ(model.faceStarts.size(), 1u);
+    ASSERT_EQ(faceCount(model), 60u);
+    for (std::size_t f = 0; f < 60; ++f) {
+        const std::span<const std::uint32_t> corners = facePositions(model, f);
+        ASSERT_EQ(corners.size(), 3u);
+        EXPECT_EQ(corners[2], f + 2) << f;
+        EXPECT_EQ(model.triangles.face(f), f);
+    }
+    const std::string whole = outcome(text, 1);
+    EXPECT_NE(whole.find("\nfaces: the triangles 0,1,2, 0,1,3,"), std::string::npos) << whole;
+    for (unsigned chunks = 2; chunks <= 9; ++chunks)
+        EXPECT_EQ(outcome(text, chunks), whole) << chunks << " chunks";
+
+    const std::string withQuad = triangles(60, 70, "f 1 2 3 4");
+    const std::string kept = outcome(withQuad, 1);
+    EXPECT_NE(kept.find("\nfaces: 0,1,2, 0,1,3,"), std::string::npos) << kept;
+    EXPECT_NE(kept.find(" 0,1,2,3, "), std::string::npos) << kept;
+    for (unsigned chunks = 2; chunks <= 9; ++chunks)
+        EXPECT_EQ(outcome(withQuad, chunks), kept) << chunks << " chunks";
 }
 
 TEST(ObjChunks, TheSurveyCountsAFacesWordsAsThePlainDefinitionDoes) {
