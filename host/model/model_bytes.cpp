@@ -113,7 +113,7 @@ SourceModel modelFromBytes(std::string_view bytes) {
     Reader in(bytes);
     SourceModel model;
     model.positions = in.array<glm::dvec3>();
-    model.positionLines = in.array<std::int64_t>();
+    model.positionLines = in.array<int>();
     model.colors = in.array<std::optional<glm::dvec3>>();
     model.normals = in.array<glm::dvec3>();
     model.texcoords = in.array<glm::dvec2>();

@@ -22,7 +22,7 @@ class SharedPositions {
 
     // The index of the position with this colour (as the file gives it: a colour that is not
     // finite is none, a finite one clamped to [0, 1]), added when it is new.
-    std::uint32_t add(glm::vec3 position, std::optional<glm::vec3> colour, std::int64_t line) {
+    std::uint32_t add(glm::vec3 position, std::optional<glm::vec3> colour, int line) {
         const Key key{position, colour.value_or(glm::vec3(0.0f)), colour ? 1u : 0u};
         const std::size_t before = keys_.size();
         const std::uint32_t index = index_.indexOf(key);

@@ -17,7 +17,7 @@
 
 struct SourceModel {
     std::vector<glm::dvec3> positions;
-    std::vector<std::int64_t> positionLines; // each position's `v` line, for messages
+    std::vector<int> positionLines; // each position's `v` line, for messages
     // `v x y z r g b` (a common extension): the vertex's diffuse colour, clamped to [0, 1];
     // one a position, or none at all when no position has one (32 bytes a position saved).
     std::vector<std::optional<glm::dvec3>> colors;

@@ -26,12 +26,12 @@ struct SourceTriangle {
     SourceCorner corners[3];
     std::uint32_t material = 0; // into SourceModel::materials
     std::uint32_t face = 0;     // the face (faceCount, facePositions) it was split from
-    std::int64_t line = 0;      // the face's line in the OBJ file
+    int line = 0;               // the face's line in its file (0: none), as readers count
 };
 
 // A model's triangles, an array a field, the normals' and texture coordinates' only when
-// some corner has one: a scan's (positions and faces alone) take 28 bytes a triangle, where
-// SourceTriangles in one array took 56, the largest of a model's arrays.
+// some corner has one, the faces' only when a face is not a triangle: a scan's (positions and
+// triangles alone) take 20 bytes a triangle, where SourceTriangles in one array took 56.
 class SourceTriangles {
   public:
     std::size_t size() const { return positions_.size(); }
@@ -55,7 +55,7 @@ class SourceTriangles {
     std::uint32_t face(std::size_t t) const {
         return facesAreTriangles_ ? static_cast<std::uint32_t>(t) : faces_[t];
     }
-    std::int64_t line(std::size_t t) const { return lines_[t]; }
+    int line(std::size_t t) const { return lines_[t]; }
     // Whether the triangles hold normals (texture coordinates): else no corner has one.
     bool anyNormal() const { return withNormals_; }
     bool anyTexcoord() const { return withTexcoords_; }
@@ -88,5 +88,5 @@ class SourceTriangles {
     std::vector<glm::uvec3> positions_;
     std::vector<glm::uvec3> normals_, texcoords_;  // kNoNormal, kNoTexcoord: a corner without
     std::vector<std::uint32_t> materials_, faces_; // faces_: empty if facesAreTriangles_
-    std::vector<std::int64_t> lines_;
+    std::vector<int> lines_;
 };

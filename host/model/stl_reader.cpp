@@ -11,7 +11,7 @@
 
 namespace {
 
-void addTriangle(SourceModel& model, const std::uint32_t corners[3], std::int64_t line) {
+void addTriangle(SourceModel& model, const std::uint32_t corners[3], int line) {
     const std::uint32_t face = addFace(model, std::span<const std::uint32_t>(corners, 3));
     auto corner = [](std::uint32_t position) {
         return SourceCorner{position, kNoNormal, kNoTexcoord};
