@@ -469,7 +469,7 @@ SourceModel readPly(std::string_view bytes, const std::string& fileName) {
         if (vertex) {
             model.positions.reserve(element.count);
             model.positionLines.reserve(element.count);
-            model.colors.reserve(element.count);
+            if (reading.colours) model.colors.reserve(element.count);
             if (reading.normals) model.normals.reserve(element.count);
         }
         for (std::uint64_t i = 0; i < element.count; ++i) {
@@ -531,8 +531,7 @@ SourceModel readPly(std::string_view bytes, const std::string& fileName) {
             if (!vertex) continue;
             model.positions.push_back(position);
             model.positionLines.push_back(line);
-            model.colors.push_back(reading.colours ? std::optional(glm::clamp(colour, 0.0, 1.0))
-                                                   : std::nullopt);
+            if (reading.colours) model.colors.emplace_back(glm::clamp(colour, 0.0, 1.0));
             if (reading.normals) model.normals.push_back(normal);
         }
     }

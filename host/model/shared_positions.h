@@ -31,8 +31,14 @@ class SharedPositions {
             model_.positionLines.push_back(line);
             const bool finite = colour && std::isfinite(colour->x) && std::isfinite(colour->y) &&
                                 std::isfinite(colour->z);
-            model_.colors.push_back(
-                finite ? std::optional(glm::clamp(glm::dvec3(*colour), 0.0, 1.0)) : std::nullopt);
+            // No colours at all until a position has one (SourceModel::colors): then none
+            // for those before it.
+            if (finite || !model_.colors.empty()) {
+                model_.colors.resize(model_.positions.size() - 1);
+                model_.colors.push_back(
+                    finite ? std::optional(glm::clamp(glm::dvec3(*colour), 0.0, 1.0))
+                           : std::nullopt);
+            }
         }
         return index;
     }

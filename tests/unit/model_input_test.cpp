@@ -1,12 +1,15 @@
 // Model and scene files as users' files are: another format behind the expected name is
 // named by its first bytes (PLY, STL, glTF, UTF-16 text), a material library that is
 // missing is one warning that says how many faces fell back to the default material, a
-// concave face is split by ear clipping (its area kept, its holes open), and a model's faces
-// are kept in its triangles until a face is not a triangle.
+// concave face is split by ear clipping (its area kept, its holes open), a model's faces
+// are kept in its triangles until a face is not a triangle, and its colours once a position
+// has one.
 #include "model/model_bytes.h"
 #include "model/obj_reader.h"
 #include "model/ply_reader.h"
 #include "model/polygon_triangulation.h"
+#include "model/shared_positions.h"
+#include "model/stl_reader.h"
 #include "scene/file_format.h"
 #include "scene/scene_error.h"
 #include "scene/scene_loader.h"
@@ -351,5 +354,28 @@ TEST(SourceTriangles, FacesAreTheTrianglesUntilThePolygon) {
         const SourceModel crossed = modelFromBytes(modelBytes(*model));
         EXPECT_EQ(crossed.triangles.facesAreTriangles(), model->triangles.facesAreTriangles());
         EXPECT_EQ(facesOf(crossed), facesOf(*model));
+    }
+}
+
+// A model keeps no colours until a position has one (32 bytes a position): PLY without
+// colour properties, STL and the shared positions of STL and assimp's models; from the
+// first coloured position on, every position has its colour or none, the first one too.
+TEST(ModelInput, ColoursOnlyOnceAPositionHasOne) {
+    EXPECT_TRUE(readPly(asciiPly("3 0 1 2\n", 1), "m.ply").colors.empty());
+    EXPECT_TRUE(readStl(binaryStl(2), "m.stl").colors.empty());
+    for (const bool firstColoured : {false, true}) {
+        SourceModel model;
+        SharedPositions shared(model, 4);
+        const std::optional<glm::vec3> red = glm::vec3(1.0f, 0.0f, 0.0f);
+        shared.add({0, 0, 0}, firstColoured ? red : std::nullopt, 1);
+        shared.add({1, 0, 0}, std::nullopt, 2);
+        EXPECT_EQ(model.colors.empty(), !firstColoured);
+        shared.add({2, 0, 0}, red, 3);
+        shared.add({3, 0, 0}, std::optional(glm::vec3(NAN, 0.0f, 0.0f)), 4); // not finite: none
+        ASSERT_EQ(model.colors.size(), 4u);
+        EXPECT_EQ(model.colors[0].has_value(), firstColoured);
+        EXPECT_FALSE(model.colors[1]);
+        EXPECT_EQ(model.colors[2], std::optional(glm::dvec3(1.0, 0.0, 0.0)));
+        EXPECT_FALSE(model.colors[3]);
     }
 }
